@@ -1,0 +1,39 @@
+#pragma once
+// The one Config tree of dslam: every tunable value with its default and unit. Sections are plain
+// structs; each lists its fields once in Fields(), which drives Validate(), the YAML and rosparam
+// loaders and the generated parameter documentation (dslam_config_doc).
+
+#include <string>
+
+#include "dslam/core/config_field.h"
+
+namespace dslam {
+
+/// Reading TUM-layout folders (rgb.txt, depth.txt, groundtruth.txt).
+struct DatasetConfig {
+  /// [s] colour and depth images are associated when their stamps differ by at most this.
+  double association_max_dt_s = 0.02;
+
+  template <typename Self, typename Visitor>
+  static void Fields(Self& s, Visitor&& v) {
+    v(FieldInfo{"association_max_dt_s", "s", 0.0, 1.0,
+                "max colour/depth timestamp difference for association", {}},
+      s.association_max_dt_s);
+  }
+};
+
+/// Root of the configuration. Add a section: a member, a line in Sections(), and its Fields().
+struct Config {
+  DatasetConfig dataset;  ///< dataset reading
+
+  /// Calls `f(name, section)` for every section, in documentation order.
+  template <typename Self, typename F>
+  static void Sections(Self& s, F&& f) {
+    f("dataset", s.dataset);
+  }
+
+  /// Throws ConfigError naming the first out-of-range or inconsistent parameter.
+  void Validate() const;
+};
+
+}  // namespace dslam

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# One-command setup on Debian 12 (run as root, or with sudo available): installs the Debian
+# packages dslam needs (skipped when already installed) and builds the catkin workspace
+# build/ws (Release, -j2) whose src/dslam links to this repository. Idempotent; a re-run with
+# nothing changed takes seconds. Prints the workspace path; `source build/ws/devel/setup.bash`.
+set -euo pipefail
+export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"  # a non-Debian python3 must not shadow Debian's
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+WS="${DSLAM_WS:-$REPO/build/ws}"
+JOBS="${DSLAM_JOBS:-2}"
+
+PACKAGES=(
+  build-essential cmake git ccache
+  ros-core-dev rosbash libnodeletlib-dev libnodeletlib-tools
+  libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libcv-bridge-dev libimage-transport-dev
+  libpcl-conversions-dev libpcl-dev libceres-dev libcgal-dev libopencv-dev libeigen3-dev
+  libyaml-cpp-dev libgtest-dev
+  python3-rostest python3-rosbag python3-sensor-msgs python3-nav-msgs python3-geometry-msgs
+  python3-visualization-msgs python3-std-srvs python3-tf2-msgs python3-tf2-ros python3-cv-bridge
+  python3-numpy python3-matplotlib python3-yaml python3-opencv python3-nose
+  rviz xvfb xauth x11-utils imagemagick
+)
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  status="$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)"
+  [[ "$status" == "install ok installed" ]] || missing+=("$pkg")
+done
+if ((${#missing[@]})); then
+  echo "[setup] installing ${#missing[@]} Debian packages: ${missing[*]}"
+  SUDO=""; [[ $(id -u) -eq 0 ]] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+else
+  echo "[setup] Debian packages: all ${#PACKAGES[@]} present"
+fi
+
+mkdir -p "$WS/src"
+if [[ "$(readlink "$WS/src/dslam" 2>/dev/null)" != "$REPO" ]]; then
+  rm -rf "$WS/src/dslam"
+  ln -s "$REPO" "$WS/src/dslam"
+fi
+
+export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
+export CCACHE_DIR="${CCACHE_DIR:-$REPO/build/ccache}"
+cd "$WS"
+echo "[setup] building $WS (Release, -j$JOBS)"
+catkin_make -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 \
+  -DPython3_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON -j"$JOBS" "$@" \
+  > "$WS/build.log" 2>&1 || { tail -n 60 "$WS/build.log"; echo "[setup] build failed: $WS/build.log"; exit 1; }
+echo "[setup] ok: source $WS/devel/setup.bash"

@@ -1,0 +1,22 @@
+#include "dslam/core/config.h"
+
+#include <algorithm>
+
+namespace dslam {
+
+void BoundsChecker::operator()(const FieldInfo& info, const std::string& value) const {
+  if (info.choices.empty()) return;
+  if (std::find(info.choices.begin(), info.choices.end(), value) != info.choices.end()) return;
+  std::string allowed;
+  for (const auto& c : info.choices) allowed += (allowed.empty() ? "" : "|") + c;
+  throw ConfigError(Name(info) + " = '" + value + "' is not one of " + allowed);
+}
+
+void Config::Validate() const {
+  Sections(*this, [](const char* section, const auto& s) {
+    using Section = std::decay_t<decltype(s)>;
+    Section::Fields(s, BoundsChecker(std::string(section) + "."));
+  });
+}
+
+}  // namespace dslam

@@ -1,0 +1,45 @@
+#include "dslam/core/depth_conversion.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <opencv2/imgcodecs.hpp>
+
+namespace dslam {
+
+cv::Mat DepthFromScaledUint16(const cv::Mat& depth_units, double units_per_metre) {
+  if (depth_units.type() != CV_16UC1) {
+    throw std::invalid_argument("depth: expected 16UC1, got OpenCV type " +
+                                std::to_string(depth_units.type()));
+  }
+  if (!(units_per_metre > 0.0)) throw std::invalid_argument("depth: scale must be positive");
+  cv::Mat metres;
+  depth_units.convertTo(metres, CV_32FC1, 1.0 / units_per_metre);
+  return metres;
+}
+
+cv::Mat DepthFromMetres(const cv::Mat& depth_m) {
+  if (depth_m.type() != CV_32FC1) {
+    throw std::invalid_argument("depth: expected 32FC1, got OpenCV type " +
+                                std::to_string(depth_m.type()));
+  }
+  cv::Mat clean = depth_m.clone();
+  clean.forEach<float>([](float& d, const int*) {
+    if (!std::isfinite(d) || d <= 0.0f) d = 0.0f;
+  });
+  return clean;
+}
+
+cv::Mat ReadDepthPng(const std::string& path, double units_per_metre) {
+  const cv::Mat raw = cv::imread(path, cv::IMREAD_ANYDEPTH);
+  if (raw.empty()) throw std::runtime_error("cannot read depth image " + path);
+  if (raw.type() != CV_16UC1) throw std::runtime_error(path + ": depth PNG is not 16-bit");
+  return DepthFromScaledUint16(raw, units_per_metre);
+}
+
+int CountValidDepth(const cv::Mat& depth_m) {
+  return cv::countNonZero(depth_m > 0.0f);
+}
+
+}  // namespace dslam

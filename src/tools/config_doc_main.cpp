@@ -1,0 +1,26 @@
+// dslam_config_doc: prints the Markdown table of every parameter (defaults, units, ranges), or
+// validates a YAML file: `dslam_config_doc [--check config.yaml]`.
+#include <iostream>
+#include <string>
+
+#include "dslam/core/config_io.h"
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--check") {
+    dslam::Config config;
+    try {
+      dslam::LoadConfigYaml(argv[2], &config);
+    } catch (const dslam::ConfigError& e) {
+      std::cerr << "invalid: " << e.what() << "\n";
+      return 1;
+    }
+    std::cout << argv[2] << ": ok\n";
+    return 0;
+  }
+  if (argc != 1) {
+    std::cerr << "usage: dslam_config_doc [--check config.yaml]\n";
+    return 2;
+  }
+  std::cout << dslam::DescribeConfigMarkdown();
+  return 0;
+}
