@@ -21,7 +21,8 @@ def choose_plane(positions, plane="auto"):
 def _top_view(axes, gt_xyz, est_xyz, plane):
     a, b = plane
     axes.plot(gt_xyz[:, a], gt_xyz[:, b], "-", color="0.25", lw=1.5, label="ground truth")
-    axes.plot(est_xyz[:, a], est_xyz[:, b], "-", color="tab:red", lw=1.2, label="estimate (aligned)")
+    axes.plot(est_xyz[:, a], est_xyz[:, b], "-", color="tab:red", lw=1.2,
+              label="estimate (aligned)")
     axes.plot(gt_xyz[0, a], gt_xyz[0, b], "o", color="0.25", ms=6, label="start")
     axes.plot(est_xyz[0, a], est_xyz[0, b], "o", color="tab:red", ms=4)
     axes.set_xlabel("%s [m]" % AXIS_NAMES[a])
