@@ -1,0 +1,52 @@
+#pragma once
+// Static point determination (paper Sec. IV and V-A, Algorithm 1): Delaunay graph over the
+// points -> inconsistent edge culling with point-correlation measurements -> connected
+// components -> the component with the largest convex-hull volume is static.
+// Front end: the tracked points of the previous frame with the two frames' measurements.
+// Back end: the marked points of the window with all their keyframe observations.
+
+#include <vector>
+
+#include "dslam/core/config.h"
+#include "dslam/core/correlation_problem.h"
+#include "dslam/core/point_graph.h"
+#include "dslam/core/segmentation.h"
+
+namespace dslam {
+
+/// Wall-clock time per step [ms] and counts of one DetermineStaticPoints call.
+struct StaticPointsStats {
+  double graph_ms = 0.0;       ///< [ms] Delaunay triangulation
+  double culling_ms = 0.0;     ///< [ms] measurements, solves and culling
+  double components_ms = 0.0;  ///< [ms] connected components and volumes
+  double total_ms = 0.0;       ///< [ms] everything
+  int points = 0;              ///< [-] input points
+  int edges = 0;               ///< [-] graph edges
+  int culled_edges = 0;        ///< [-] inconsistent edges removed
+  int measurements = 0;        ///< [-] point-correlation measurements z_ijk
+  int rounds = 0;              ///< [-] least-squares rounds (0 for the direct test)
+  int components = 0;          ///< [-] connected components (singletons included)
+  int static_points = 0;       ///< [-] points labelled kStatic
+  int dynamic_points = 0;      ///< [-] points labelled kDynamic
+  int isolated_points = 0;     ///< [-] points labelled kIsolated
+};
+
+/// Everything DetermineStaticPoints found.
+struct StaticPointsResult {
+  std::vector<PointLabel> labels;             ///< per input point
+  std::vector<int> component;                 ///< component id per input point
+  std::vector<GraphEdge> edges;               ///< Delaunay graph
+  std::vector<bool> edge_kept;                ///< parallel to edges; false: inconsistent
+  std::vector<Eigen::Vector3d> points_world;  ///< [m] optimised (least_squares) or input points
+  int static_component = -1;                  ///< -1: no static component (all kUndecided)
+  bool ambiguous = false;                     ///< a second component had a similar volume
+  StaticPointsStats stats;                    ///< timings and counts
+};
+
+/// Runs the three steps on `input` (points, fixed camera poses, observations). The graph is
+/// built over input.points_world; volumes use the optimised points. Throws
+/// std::invalid_argument on inconsistent indices.
+StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
+                                         const StaticPointsConfig& config);
+
+}  // namespace dslam

@@ -1,0 +1,82 @@
+#include "dslam/core/static_points.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace dslam {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double MsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+CullingResult RunCulling(const CorrelationInput& input, const std::vector<GraphEdge>& edges,
+                         const StaticPointsConfig& config) {
+  if (config.method == "direct") {
+    CullingResult result = DirectEdgeTest(input, edges, config.direct_probability);
+    result.points_world = input.points_world;
+    return result;
+  }
+  CullingOptions options;
+  options.max_rounds = config.max_rounds;
+  options.chi2_threshold = config.chi2_threshold;
+  options.prior_sigma_m = config.prior_sigma_m;
+  options.min_inlier_fraction = config.min_inlier_fraction;
+  return CullInconsistentEdges(input, edges, options);
+}
+
+void CountLabels(StaticPointsResult* result) {
+  StaticPointsStats& s = result->stats;
+  for (PointLabel label : result->labels) {
+    s.static_points += label == PointLabel::kStatic;
+    s.dynamic_points += label == PointLabel::kDynamic;
+    s.isolated_points += label == PointLabel::kIsolated;
+  }
+  s.components = result->component.empty()
+                     ? 0
+                     : *std::max_element(result->component.begin(), result->component.end()) + 1;
+  s.culled_edges =
+      static_cast<int>(std::count(result->edge_kept.begin(), result->edge_kept.end(), false));
+}
+
+}  // namespace
+
+StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
+                                         const StaticPointsConfig& config) {
+  StaticPointsResult result;
+  const auto start = Clock::now();
+  result.edges = BuildDelaunayGraph(input.points_world);
+  result.stats.graph_ms = MsSince(start);
+
+  const auto culling_start = Clock::now();
+  CullingResult culling = RunCulling(input, result.edges, config);
+  result.edge_kept = std::move(culling.edge_kept);
+  result.points_world = std::move(culling.points_world);
+  result.stats.culling_ms = MsSince(culling_start);
+
+  const auto components_start = Clock::now();
+  const int num_points = static_cast<int>(input.points_world.size());
+  result.component = ConnectedComponents(num_points, result.edges, result.edge_kept);
+  StaticSelectionOptions selection_options;
+  selection_options.min_component_points = config.min_component_points;
+  selection_options.min_static_points = config.min_static_points;
+  selection_options.ambiguity_ratio = config.ambiguity_ratio;
+  StaticSelection selection =
+      SelectStaticComponent(result.points_world, result.component, selection_options);
+  result.labels = std::move(selection.labels);
+  result.static_component = selection.static_component;
+  result.ambiguous = selection.ambiguous;
+  result.stats.components_ms = MsSince(components_start);
+  result.stats.total_ms = MsSince(start);
+
+  result.stats.points = num_points;
+  result.stats.edges = static_cast<int>(result.edges.size());
+  result.stats.measurements = culling.measurements;
+  result.stats.rounds = culling.rounds;
+  CountLabels(&result);
+  return result;
+}
+
+}  // namespace dslam

@@ -1,0 +1,55 @@
+// dslam_spd_bench: median runtime of DetermineStaticPoints on synthetic scenes (a room with a
+// moving cluster, see synthetic_scene.h) for a few problem sizes and frame counts.
+// Usage: dslam_spd_bench [repetitions=50] [method=least_squares|direct]
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "dslam/core/static_points.h"
+#include "dslam/core/synthetic_scene.h"
+
+namespace {
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+void Bench(int points, int frames, int repetitions, const dslam::StaticPointsConfig& config) {
+  dslam::SyntheticSceneOptions o;
+  o.frames = frames;
+  o.dynamic_points = points / 6;
+  o.static_points = points - o.dynamic_points;
+  const dslam::SyntheticScene scene = dslam::MakeSyntheticScene(o);
+  std::vector<double> total, graph, culling, components;
+  dslam::StaticPointsStats last;
+  for (int r = 0; r < repetitions; ++r) {
+    last = dslam::DetermineStaticPoints(scene.input, config).stats;
+    total.push_back(last.total_ms);
+    graph.push_back(last.graph_ms);
+    culling.push_back(last.culling_ms);
+    components.push_back(last.components_ms);
+  }
+  std::printf("| %5d | %2d | %6d | %5d | %3d | %7.3f | %7.3f | %7.3f | %7.3f |\n", points, frames,
+              last.edges, last.culled_edges, last.rounds, Median(total), Median(graph),
+              Median(culling), Median(components));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 50;
+  dslam::StaticPointsConfig config;
+  if (argc > 2) config.method = argv[2];
+  config.Fields(config, dslam::BoundsChecker("static_points."));
+  std::printf("method %s, %d repetitions, median [ms]\n", config.method.c_str(), repetitions);
+  std::printf(
+      "| points | frames | edges | culled | rounds | total | graph | culling | components |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (int points : {300, 1000}) {
+    for (int frames : {2, 8}) Bench(points, frames, repetitions, config);
+  }
+  return 0;
+}
