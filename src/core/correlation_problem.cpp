@@ -16,43 +16,65 @@ namespace {
 
 using internal::CorrelationMeasurement;
 
-// One linear least-squares solve of J_p + prior, in increments from the initial points.
-std::vector<Eigen::Vector3d> SolvePoints(const std::vector<Eigen::Vector3d>& initial,
-                                         const std::vector<GraphEdge>& edges,
-                                         const std::vector<CorrelationMeasurement>& measurements,
-                                         double prior_information) {
+using Solver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
+
+// Lower triangle of the normal equations of J_p + prior (in increments from the initial points)
+// and its right-hand side. Every edge emits its block, even when all its measurements are culled,
+// so the sparsity pattern stays the same across rounds.
+Eigen::SparseMatrix<double> NormalEquations(const std::vector<Eigen::Vector3d>& initial,
+                                            const std::vector<GraphEdge>& edges,
+                                            const std::vector<CorrelationMeasurement>& ms,
+                                            double prior_information, Eigen::VectorXd* rhs) {
   const int n = static_cast<int>(initial.size());
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(3 * n + 36 * measurements.size());
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(3 * n);
-  auto add_block = [&triplets](int bi, int bj, const Eigen::Matrix3d& block) {
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) triplets.emplace_back(3 * bi + r, 3 * bj + c, block(r, c));
-    }
-  };
-  for (int i = 0; i < 3 * n; ++i) triplets.emplace_back(i, i, prior_information);
-  for (const CorrelationMeasurement& m : measurements) {
+  std::vector<Eigen::Matrix3d> edge_block(edges.size(), Eigen::Matrix3d::Zero());
+  std::vector<Eigen::Matrix3d> diagonal(n, prior_information * Eigen::Matrix3d::Identity());
+  rhs->setZero(3 * n);
+  for (const CorrelationMeasurement& m : ms) {
     if (!m.active) continue;
     const GraphEdge& e = edges[m.edge];
     const Eigen::Matrix3d rt_w = m.R_camera_world.transpose() * m.information;
     const Eigen::Matrix3d a = rt_w * m.R_camera_world;
-    const Eigen::Vector3d residual = m.z - m.R_camera_world * (initial[e.i] - initial[e.j]);
-    const Eigen::Vector3d b = rt_w * residual;
-    add_block(e.i, e.i, a);
-    add_block(e.j, e.j, a);
-    add_block(e.i, e.j, -a);
-    add_block(e.j, e.i, -a);
-    rhs.segment<3>(3 * e.i) += b;
-    rhs.segment<3>(3 * e.j) -= b;
+    const Eigen::Vector3d b = rt_w * (m.z - m.R_camera_world * (initial[e.i] - initial[e.j]));
+    edge_block[m.edge] += a;
+    diagonal[e.i] += a;
+    diagonal[e.j] += a;
+    rhs->segment<3>(3 * e.i) += b;
+    rhs->segment<3>(3 * e.j) -= b;
+  }
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(6 * n + 9 * edges.size());
+  for (int i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      for (int r = c; r < 3; ++r) triplets.emplace_back(3 * i + r, 3 * i + c, diagonal[i](r, c));
+    }
+  }
+  for (size_t k = 0; k < edges.size(); ++k) {  // block (j, i), j > i: below the diagonal
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        triplets.emplace_back(3 * edges[k].j + r, 3 * edges[k].i + c, -edge_block[k](r, c));
+      }
+    }
   }
   Eigen::SparseMatrix<double> h(3 * n, 3 * n);
   h.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(h);
-  if (solver.info() != Eigen::Success)
+  return h;
+}
+
+// One linear least-squares solve; the solver's symbolic analysis is done on the first call.
+std::vector<Eigen::Vector3d> SolvePoints(const std::vector<Eigen::Vector3d>& initial,
+                                         const std::vector<GraphEdge>& edges,
+                                         const std::vector<CorrelationMeasurement>& measurements,
+                                         double prior_information, bool analyze, Solver* solver) {
+  Eigen::VectorXd rhs;
+  const Eigen::SparseMatrix<double> h =
+      NormalEquations(initial, edges, measurements, prior_information, &rhs);
+  if (analyze) solver->analyzePattern(h);
+  solver->factorize(h);
+  if (solver->info() != Eigen::Success)
     throw std::runtime_error("SolvePoints: factorization failed");
-  const Eigen::VectorXd delta = solver.solve(rhs);
+  const Eigen::VectorXd delta = solver->solve(rhs);
   std::vector<Eigen::Vector3d> points(initial);
-  for (int i = 0; i < n; ++i) points[i] += delta.segment<3>(3 * i);
+  for (size_t i = 0; i < points.size(); ++i) points[i] += delta.segment<3>(3 * i);
   return points;
 }
 
@@ -90,8 +112,10 @@ CullingResult CullInconsistentEdges(const CorrelationInput& input,
   CullingResult result;
   result.edge_kept.assign(edges.size(), true);
   result.points_world = input.points_world;
+  Solver solver;
   for (int round = 0; round < options.max_rounds; ++round) {
-    result.points_world = SolvePoints(input.points_world, edges, measurements, prior_information);
+    result.points_world = SolvePoints(input.points_world, edges, measurements, prior_information,
+                                      round == 0, &solver);
     ++result.rounds;
     bool changed = false;
     for (CorrelationMeasurement& m : measurements) {

@@ -1,4 +1,5 @@
 // DirectEdgeTest and ChiSquareQuantile (declared in correlation_problem.h).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -62,6 +63,7 @@ CullingResult DirectEdgeTest(const CorrelationInput& input, const std::vector<Gr
   result.edge_inliers.assign(edges.size(), 0);
   result.edge_max_chi2.assign(edges.size(), 0.0);
   result.measurements = static_cast<int>(ms.size());
+  std::vector<double> threshold_by_count;  // chi-square quantile per measurement count, cached
   for (size_t first = 0; first < ms.size();) {
     size_t last = first;
     while (last < ms.size() && ms[last].edge == ms[first].edge) ++last;
@@ -72,7 +74,14 @@ CullingResult DirectEdgeTest(const CorrelationInput& input, const std::vector<Gr
     if (count >= 2) {
       const double chi2 = EdgeStatistic(ms, first, last);
       result.edge_max_chi2[e] = chi2;
-      if (chi2 > ChiSquareQuantile(3 * (count - 1), probability)) {
+      if (threshold_by_count.size() <= static_cast<size_t>(count)) {
+        const size_t old_size = threshold_by_count.size();
+        threshold_by_count.resize(count + 1);
+        for (size_t c = std::max<size_t>(old_size, 2); c <= static_cast<size_t>(count); ++c) {
+          threshold_by_count[c] = ChiSquareQuantile(3 * (static_cast<int>(c) - 1), probability);
+        }
+      }
+      if (chi2 > threshold_by_count[count]) {
         result.edge_kept[e] = false;
         result.edge_inliers[e] = 0;
         result.culled_measurements += count;
