@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dslam/core/config_field.h"
+#include "dslam/core/features_config.h"
 
 namespace dslam {
 
@@ -24,12 +25,18 @@ struct DatasetConfig {
 
 /// Root of the configuration. Add a section: a member, a line in Sections(), and its Fields().
 struct Config {
-  DatasetConfig dataset;  ///< dataset reading
+  DatasetConfig dataset;         ///< dataset reading
+  DepthNoiseConfig depth_noise;  ///< RGB-D point measurement noise (features_config.h)
+  FeaturesConfig features;       ///< ORB extraction (features_config.h)
+  PoseConfig pose;               ///< motion-only BA and RANSAC (features_config.h)
 
   /// Calls `f(name, section)` for every section, in documentation order.
   template <typename Self, typename F>
   static void Sections(Self& s, F&& f) {
     f("dataset", s.dataset);
+    f("depth_noise", s.depth_noise);
+    f("features", s.features);
+    f("pose", s.pose);
   }
 
   /// Throws ConfigError naming the first out-of-range or inconsistent parameter.
