@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One-command setup on Debian 12 (run as root, or with sudo available): installs the Debian
 # packages dslam needs (skipped when already installed) and builds the catkin workspace
-# build/ws (Release, -j2) whose src/dslam links to this repository. Idempotent; a re-run with
+# build/ws (Release, -j2) whose src/dslam links to this repository's files. Idempotent; a re-run with
 # nothing changed takes seconds. Prints the workspace path; `source build/ws/devel/setup.bash`.
 set -euo pipefail
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"  # a non-Debian python3 must not shadow Debian's
@@ -36,11 +36,18 @@ else
   echo "[setup] Debian packages: all ${#PACKAGES[@]} present"
 fi
 
-mkdir -p "$WS/src"
-if [[ "$(readlink "$WS/src/dslam" 2>/dev/null)" != "$REPO" ]]; then
-  rm -rf "$WS/src/dslam"
-  ln -s "$REPO" "$WS/src/dslam"
-fi
+# src/dslam is a folder of links to the repository's top-level entries, all but build/ and out/:
+# a link to the whole repository would contain the workspace itself, and rosrun's `find -L`
+# would then report a file-system loop.
+PKG="$WS/src/dslam"
+[[ -L "$PKG" ]] && rm -f "$PKG"
+mkdir -p "$PKG"
+for entry in "$REPO"/* "$REPO"/.clang-format; do
+  name="$(basename "$entry")"
+  case "$name" in build|out) continue ;; esac
+  [[ "$(readlink "$PKG/$name" 2>/dev/null)" == "$entry" ]] || ln -sfn "$entry" "$PKG/$name"
+done
+for link in "$PKG"/*; do [[ -e "$link" ]] || rm -f "$link"; done  # entries removed from the repo
 
 export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
 export CCACHE_DIR="${CCACHE_DIR:-$REPO/build/ccache}"

@@ -1,0 +1,80 @@
+#pragma once
+// The odometry's local map: map points (marked = trusted static, unmarked = seen moving) and the
+// keyframes that created them. Single-threaded: owned and mutated by the tracking thread only.
+
+#include <cstdint>
+#include <deque>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+namespace dslam {
+
+using PointId = int64_t;
+
+/// One 3D landmark. Positions are in the world frame [m].
+struct MapPoint {
+  PointId id = -1;                                      ///< assigned by Map::AddPoint
+  Eigen::Vector3d p_world = Eigen::Vector3d::Zero();    ///< position [m], world frame
+  Eigen::Matrix3d cov_world = Eigen::Matrix3d::Identity();  ///< position covariance [m^2]
+  cv::Mat descriptor;    ///< 1x32 CV_8U ORB descriptor of the observation that created it
+  int octave = 0;        ///< pyramid level of that observation
+  bool marked = true;    ///< trusted static: only marked points drive motion estimation
+  int keyframe_id = -1;  ///< keyframe that created the point (its reference observation)
+  int created_frame = 0;    ///< frame index of creation
+  int last_seen_frame = 0;  ///< last frame index where it was matched
+  int times_visible = 0;    ///< frames where it projected into the image
+  int times_found = 0;      ///< frames where it was matched
+};
+
+/// A keyframe: the pose of a frame that created map points.
+struct KeyFrame {
+  int id = -1;                  ///< sequential keyframe id
+  int frame_index = 0;          ///< index of the frame it was made from
+  double stamp_s = 0.0;         ///< [s]
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+  std::vector<PointId> points;  ///< map points it observed (created or matched) when it was made
+};
+
+/// Map points and a window of recent keyframes.
+class Map {
+ public:
+  /// Adds a point, assigns and returns its id.
+  PointId AddPoint(MapPoint point);
+
+  /// The point with `id`, or nullptr when it was culled.
+  MapPoint* Find(PointId id);
+  const MapPoint* Find(PointId id) const;
+
+  /// Removes a point (no-op when absent).
+  void Erase(PointId id);
+
+  /// Appends a keyframe (its id is assigned) and drops the oldest beyond `max_keyframes`.
+  const KeyFrame& AddKeyFrame(KeyFrame keyframe, int max_keyframes);
+
+  /// Recent keyframes, oldest first.
+  const std::deque<KeyFrame>& keyframes() const { return keyframes_; }
+
+  /// Ids of the points observed by the keyframes in the window plus `extra`, without duplicates
+  /// and without culled points: the local map that tracking searches.
+  std::vector<PointId> LocalPoints(const std::vector<PointId>& extra) const;
+
+  /// Removes points that are neither referenced by a window keyframe nor seen since
+  /// `oldest_frame_to_keep`, and points whose found/visible ratio fell below `min_found_ratio`
+  /// after `min_visible` sightings. Returns the number removed.
+  int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible);
+
+  size_t size() const { return points_.size(); }  ///< number of map points
+  void Clear();                                   ///< removes every point and keyframe
+
+ private:
+  std::unordered_map<PointId, MapPoint> points_;
+  std::deque<KeyFrame> keyframes_;
+  PointId next_point_id_ = 0;
+  int next_keyframe_id_ = 0;
+};
+
+}  // namespace dslam

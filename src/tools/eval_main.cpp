@@ -1,0 +1,233 @@
+// dslam_eval: trajectory accuracy of an estimate against ground truth (TUM definitions: ATE after
+// SE(3) alignment, RPE over 1 s, plus coverage of the sequence). See docs/readme/eval.md.
+//   dslam_eval --groundtruth GT --trajectory EST [--camera camera.yaml] [--frames rgb.txt]
+//              [--json OUT.json] [--write-groundtruth OUT.txt] [--max-dt S]
+//              [--rpe-interval S] [--max-gap S]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dslam/core/dataset_io.h"
+#include "dslam/core/groundtruth_correction.h"
+#include "dslam/core/trajectory_io.h"
+#include "dslam/core/trajectory_metrics.h"
+
+namespace {
+
+constexpr char kUsage[] =
+    "usage: dslam_eval --groundtruth GT.txt --trajectory EST.txt [--camera camera.yaml]\n"
+    "                  [--frames rgb.txt] [--json OUT.json] [--write-groundtruth OUT.txt]\n"
+    "                  [--max-dt S] [--rpe-interval S] [--max-gap S]\n"
+    "  --groundtruth   ground truth, TUM format (timestamp tx ty tz qx qy qz qw)\n"
+    "  --trajectory    estimated trajectory T_world_camera, TUM format\n"
+    "  --camera        camera.yaml; 'groundtruth_correction: bonn' converts the Bonn marker\n"
+    "                  poses of GT to colour-camera poses before evaluation\n"
+    "  --frames        rgb.txt of the input frames: coverage is measured over their time span\n"
+    "                  (clipped to the ground truth's), else over the ground truth's span\n"
+    "  --json          also write the numbers as JSON to this file\n"
+    "  --write-groundtruth  write the (corrected) ground truth used, TUM format\n"
+    "  --max-dt        association tolerance [s] (default 0.02)\n"
+    "  --rpe-interval  RPE interval [s] (default 1.0)\n"
+    "  --max-gap       longest gap between estimates counted as covered [s] (default 0.1)\n";
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Arguments {
+  std::map<std::string, std::string> values;  // option name without "--" -> value
+  bool help = false;
+};
+
+Arguments ParseArguments(int argc, char** argv) {
+  static const std::vector<std::string> kKnown = {
+      "groundtruth",       "trajectory", "camera",       "frames", "json",
+      "write-groundtruth", "max-dt",     "rpe-interval", "max-gap"};
+  Arguments args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      args.help = true;
+      continue;
+    }
+    const std::string name = arg.rfind("--", 0) == 0 ? arg.substr(2) : "";
+    if (std::find(kKnown.begin(), kKnown.end(), name) == kKnown.end()) {
+      throw UsageError("unknown argument '" + arg + "'");
+    }
+    if (i + 1 >= argc) throw UsageError("missing value after " + arg);
+    args.values[name] = argv[++i];
+  }
+  if (args.help) return args;
+  for (const char* required : {"groundtruth", "trajectory"}) {
+    if (!args.values.count(required))
+      throw UsageError(std::string("--") + required + " is required");
+  }
+  return args;
+}
+
+double PositiveNumber(const Arguments& args, const std::string& name, double fallback) {
+  const auto it = args.values.find(name);
+  if (it == args.values.end()) return fallback;
+  size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(it->second, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != it->second.size() || !(value > 0.0) || !std::isfinite(value)) {
+    throw UsageError("--" + name + " needs a positive number, got '" + it->second + "'");
+  }
+  return value;
+}
+
+std::string Fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+  return buffer;
+}
+
+void PrintTable(const dslam::TrajectoryMetrics& m, const std::string& correction) {
+  const auto row = [](const std::string& name, const std::string& unit, const std::string& value) {
+    std::printf("%-24s %-7s %s\n", name.c_str(), unit.c_str(), value.c_str());
+  };
+  const bool has_rpe = m.rpe.num_pairs > 0;
+  row("ATE RMSE", "[m]", Fixed(m.ate_m.rmse, 6));
+  row("ATE mean", "[m]", Fixed(m.ate_m.mean, 6));
+  row("ATE median", "[m]", Fixed(m.ate_m.median, 6));
+  row("ATE max", "[m]", Fixed(m.ate_m.max, 6));
+  row("RPE trans RMSE", "[m/s]", has_rpe ? Fixed(m.rpe.translation_rmse_m_per_s, 6) : "n/a");
+  row("RPE rot RMSE", "[deg/s]", has_rpe ? Fixed(m.rpe.rotation_rmse_deg_per_s, 6) : "n/a");
+  row("RPE pairs", "", std::to_string(m.rpe.num_pairs));
+  row("associated / estimated", "",
+      std::to_string(m.num_associated) + " / " + std::to_string(m.num_estimated));
+  const dslam::Coverage& c = m.coverage;
+  row("coverage", "",
+      Fixed(c.fraction, 4) + " (" + Fixed(c.covered_s, 3) + " s of " +
+          Fixed(c.span_end_s - c.span_start_s, 3) + " s)");
+  row("groundtruth correction", "", correction);
+}
+
+std::string JsonString(const std::string& text) {
+  std::string out = "\"";
+  for (char ch : text) {
+    if (ch == '"' || ch == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (static_cast<unsigned char>(ch) < 0x20) {
+      char buffer[8];
+      std::snprintf(buffer, sizeof(buffer), "\\u%04x", ch);
+      out += buffer;
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+std::string JsonNumber(double value) {
+  if (!std::isfinite(value)) return "null";
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.9g", value);
+  return buffer;
+}
+
+void WriteJson(const std::string& path, const dslam::TrajectoryMetrics& m, const Arguments& args,
+               const std::string& correction, const dslam::TrajectoryMetricsOptions& options) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  const bool has_rpe = m.rpe.num_pairs > 0;
+  const double nan = std::nan("");
+  out << "{\n"
+      << "  \"groundtruth\": " << JsonString(args.values.at("groundtruth")) << ",\n"
+      << "  \"trajectory\": " << JsonString(args.values.at("trajectory")) << ",\n"
+      << "  \"groundtruth_correction\": " << JsonString(correction) << ",\n"
+      << "  \"max_association_dt_s\": " << JsonNumber(options.max_association_dt_s) << ",\n"
+      << "  \"rpe_interval_s\": " << JsonNumber(options.rpe_interval_s) << ",\n"
+      << "  \"max_gap_s\": " << JsonNumber(options.max_gap_s) << ",\n"
+      << "  \"ate_rmse_m\": " << JsonNumber(m.ate_m.rmse) << ",\n"
+      << "  \"ate_mean_m\": " << JsonNumber(m.ate_m.mean) << ",\n"
+      << "  \"ate_median_m\": " << JsonNumber(m.ate_m.median) << ",\n"
+      << "  \"ate_max_m\": " << JsonNumber(m.ate_m.max) << ",\n"
+      << "  \"rpe_trans_rmse_m_per_s\": "
+      << JsonNumber(has_rpe ? m.rpe.translation_rmse_m_per_s : nan) << ",\n"
+      << "  \"rpe_rot_rmse_deg_per_s\": "
+      << JsonNumber(has_rpe ? m.rpe.rotation_rmse_deg_per_s : nan) << ",\n"
+      << "  \"rpe_pairs\": " << m.rpe.num_pairs << ",\n"
+      << "  \"associated_poses\": " << m.num_associated << ",\n"
+      << "  \"estimated_poses\": " << m.num_estimated << ",\n"
+      << "  \"groundtruth_poses\": " << m.num_groundtruth << ",\n"
+      << "  \"coverage\": " << JsonNumber(m.coverage.fraction) << ",\n"
+      << "  \"coverage_covered_s\": " << JsonNumber(m.coverage.covered_s) << ",\n"
+      << "  \"coverage_span_s\": " << JsonNumber(m.coverage.span_end_s - m.coverage.span_start_s)
+      << "\n"
+      << "}\n";
+  if (!out) throw std::runtime_error("error while writing " + path);
+}
+
+int Run(const Arguments& args) {
+  dslam::TrajectoryMetricsOptions options;
+  options.max_association_dt_s = PositiveNumber(args, "max-dt", options.max_association_dt_s);
+  options.rpe_interval_s = PositiveNumber(args, "rpe-interval", options.rpe_interval_s);
+  options.max_gap_s = PositiveNumber(args, "max-gap", options.max_gap_s);
+  dslam::GroundTruthCorrection correction = dslam::GroundTruthCorrection::kNone;
+  if (args.values.count("camera")) {
+    correction = dslam::LoadCameraYaml(args.values.at("camera")).groundtruth_correction;
+  }
+  const std::string correction_name =
+      correction == dslam::GroundTruthCorrection::kBonn ? "bonn" : "none";
+  const dslam::Trajectory groundtruth = dslam::ApplyGroundTruthCorrection(
+      dslam::ReadTumTrajectory(args.values.at("groundtruth")), correction);
+  if (args.values.count("write-groundtruth")) {
+    dslam::WriteTumTrajectory(args.values.at("write-groundtruth"), groundtruth);
+  }
+  const dslam::Trajectory estimated = dslam::ReadTumTrajectory(args.values.at("trajectory"));
+  if (groundtruth.empty()) throw std::runtime_error("ground truth has no poses");
+  if (estimated.empty()) throw std::runtime_error("trajectory has no poses");
+  std::vector<double> frame_stamps;
+  if (args.values.count("frames")) {
+    for (const dslam::StampedFile& f : dslam::ReadFileList(args.values.at("frames"))) {
+      frame_stamps.push_back(f.stamp_s);
+    }
+    if (frame_stamps.empty()) throw std::runtime_error("--frames list has no entries");
+  }
+  const dslam::TrajectoryMetrics metrics =
+      dslam::EvaluateTrajectory(estimated, groundtruth, frame_stamps, options);
+  PrintTable(metrics, correction_name);
+  if (args.values.count("json")) {
+    WriteJson(args.values.at("json"), metrics, args, correction_name, options);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Arguments args;
+  try {
+    args = ParseArguments(argc, argv);
+  } catch (const UsageError& e) {
+    std::cerr << "dslam_eval: " << e.what() << " (see dslam_eval --help)\n";
+    return 2;
+  }
+  if (args.help) {
+    std::cout << kUsage;
+    return 0;
+  }
+  try {
+    return Run(args);
+  } catch (const UsageError& e) {
+    std::cerr << "dslam_eval: " << e.what() << " (see dslam_eval --help)\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "dslam_eval: error: " << e.what() << "\n";
+    return 1;
+  }
+}
