@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <opencv2/imgproc.hpp>
 
 #include "dslam/core/features.h"
@@ -53,8 +54,8 @@ std::vector<dslam::PoseObservation> Observations(const dslam::PinholeCamera& cam
     const double s = dslam::DepthSigma(d, noise);
     dslam::PointMeasurement m;
     m.covariance = dslam::PointCovariance(uv, {d, s * s}, 1.0, camera);
-    m.y_camera =
-        camera.BackProject(uv, d) + s * Eigen::Vector3d(normal(*rng), normal(*rng), normal(*rng));
+    const Eigen::Vector3d white(normal(*rng), normal(*rng), normal(*rng));
+    m.y_camera = camera.BackProject(uv, d) + m.covariance.llt().matrixL() * white;
     if (uni(*rng) < 0.2) m.y_camera += Eigen::Vector3d(0.3, -0.2, 0.4);
     obs.push_back(dslam::PoseObservation::WithDepth(T_cw.inverse() * camera.BackProject(uv, d), m));
   }
