@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the README's parameter table from the code (dslam_config_doc); a test checks it.
+# Regenerates the README's parameter table and config/default.yaml from the code
+# (dslam_config_doc); tests check both.
 set -euo pipefail
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WS="${DSLAM_WS:-$REPO/build/ws}"
@@ -14,4 +15,5 @@ end = "<!-- END PARAMETERS -->"
 a, b = text.index(begin) + len(begin), text.index(end)
 open(path, "w").write(text[:a] + table + "\n" + text[b:])
 PY
-echo "README parameter table updated"
+"$WS/devel/lib/dslam/dslam_config_doc" --yaml > "$REPO/config/default.yaml"
+echo "README parameter table and config/default.yaml updated"

@@ -1,5 +1,5 @@
-// dslam_config_doc: prints the Markdown table of every parameter (defaults, units, ranges), or
-// validates a YAML file: `dslam_config_doc [--check config.yaml]`.
+// dslam_config_doc: prints the Markdown table of every parameter (defaults, units, ranges), the
+// default YAML file (--yaml), or validates a YAML file (--check config.yaml).
 #include <iostream>
 #include <string>
 
@@ -17,8 +17,12 @@ int main(int argc, char** argv) {
     std::cout << argv[2] << ": ok\n";
     return 0;
   }
+  if (argc == 2 && std::string(argv[1]) == "--yaml") {
+    std::cout << dslam::DescribeConfigYaml();
+    return 0;
+  }
   if (argc != 1) {
-    std::cerr << "usage: dslam_config_doc [--check config.yaml]\n";
+    std::cerr << "usage: dslam_config_doc [--yaml | --check config.yaml]\n";
     return 2;
   }
   std::cout << dslam::DescribeConfigMarkdown();

@@ -71,6 +71,17 @@ TEST(Config, ShippedYamlFilesLoad) {
 namespace dslam {
 namespace {
 
+// config/default.yaml is the generated default file (every key, with its default).
+TEST(Config, DefaultYamlIsGeneratedFromCode) {
+  std::ifstream in(std::string(DSLAM_SOURCE_DIR) + "/config/default.yaml");
+  ASSERT_TRUE(in.good());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, DescribeConfigYaml()) << "run scripts/update_readme.sh";
+  Config loaded;
+  LoadConfigYamlString(text, &loaded);
+  EXPECT_EQ(DescribeConfigYaml(loaded), text);
+}
+
 // The README's parameter table is generated from the code (scripts/update_readme.sh); it must
 // match what the code says now.
 TEST(Config, ReadmeParameterTableMatchesCode) {

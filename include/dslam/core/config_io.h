@@ -15,6 +15,10 @@ void LoadConfigYaml(const std::string& path, Config* config);
 /// Same as LoadConfigYaml, from YAML text.
 void LoadConfigYamlString(const std::string& yaml_text, Config* config);
 
+/// YAML text with every section and key at the values of `config`, each with its unit and
+/// description as a comment (config/default.yaml is this for the defaults).
+std::string DescribeConfigYaml(const Config& config = Config());
+
 /// A Markdown table of every parameter: name, default, unit, bounds, description.
 std::string DescribeConfigMarkdown(const Config& defaults = Config());
 

@@ -1,0 +1,35 @@
+#pragma once
+// Constant-velocity motion model: predicts the next camera pose from the last two tracked ones.
+
+#include <Eigen/Geometry>
+
+namespace dslam {
+
+/// Keeps the last tracked pose and the velocity between the last two, in the camera frame.
+class ConstantVelocityModel {
+ public:
+  /// Records a tracked pose (optical frame -> world) at `stamp_s` [s].
+  void Update(double stamp_s, const Eigen::Isometry3d& T_world_camera);
+
+  /// Pose predicted for `stamp_s` [s]: the last pose moved on by the last velocity, scaled to
+  /// the elapsed time (at most 1 s ahead). The last pose when fewer than two are known.
+  Eigen::Isometry3d Predict(double stamp_s) const;
+
+  /// Forgets the velocity (keeps the last pose), e.g. after tracking was lost.
+  void ForgetVelocity() { has_velocity_ = false; }
+
+  /// Forgets everything.
+  void Reset() { has_pose_ = has_velocity_ = false; }
+
+  bool has_pose() const { return has_pose_; }
+  const Eigen::Isometry3d& last_pose() const { return T_world_last_; }
+
+ private:
+  bool has_pose_ = false, has_velocity_ = false;
+  double last_stamp_s_ = 0.0;
+  Eigen::Isometry3d T_world_last_ = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d rotation_rate_ = Eigen::Vector3d::Zero();     ///< [rad/s] axis-angle, camera
+  Eigen::Vector3d translation_rate_ = Eigen::Vector3d::Zero();  ///< [m/s] in the last camera
+};
+
+}  // namespace dslam

@@ -1,0 +1,73 @@
+#pragma once
+// Config section `tracking`: local-map tracking, keyframes, map points and tracking loss.
+// A member of the one Config tree (config.h).
+
+#include <string>
+
+#include "dslam/core/config_field.h"
+
+namespace dslam {
+
+/// Local-map tracking, keyframe policy, point management and recovery (odometry.h).
+struct TrackingConfig {
+  int window_keyframes = 8;          ///< [-] keyframes whose points form the local map
+  double search_radius_px = 10.0;    ///< [px] projection search radius at octave 0
+  double wide_search_radius_px = 30.0;  ///< [px] radius when the narrow search finds too few
+  int min_matches = 40;              ///< [-] fewer matches in the narrow search: search wide
+  int min_static_inliers = 20;       ///< [-] fewer static inliers: the pose is not trusted
+  /// Frames the front-end point correlations compare: "reference" (the map point positions,
+  /// i.e. each point's reference keyframe observation, vs the current frame), "previous" (the
+  /// paper: previous frame vs current frame) or "both".
+  std::string front_end_reference = "reference";
+  int keyframe_max_interval = 10;    ///< [frames] a keyframe at least this often
+  double keyframe_min_tracked_ratio = 0.7;  ///< [-] static matches below this x the last keyframe's
+  int keyframe_min_static = 150;     ///< [-] fewer static matches: new keyframe
+  int max_new_points = 400;          ///< [-] map points created per keyframe at most
+  double dynamic_neighbour_radius_px = 40.0;  ///< [px] neighbourhood for new-point labels
+  double cull_min_found_ratio = 0.25;  ///< [-] found/visible below this after cull_min_visible
+  int cull_min_visible = 8;          ///< [-] sightings before the found ratio is checked
+  int lost_frames_before_reset = 10;  ///< [frames] lost this long: re-initialise at last pose
+
+  template <typename Self, typename Visitor>
+  static void Fields(Self& s, Visitor&& v) {
+    v(FieldInfo{"window_keyframes", "-", 1, 100, "keyframes whose points form the local map", {}},
+      s.window_keyframes);
+    v(FieldInfo{"search_radius_px", "px", 1.0, 200.0, "projection search radius (octave 0)", {}},
+      s.search_radius_px);
+    v(FieldInfo{"wide_search_radius_px", "px", 1.0, 400.0,
+                "search radius when the narrow search finds too few matches", {}},
+      s.wide_search_radius_px);
+    v(FieldInfo{"min_matches", "-", 3, 10000, "fewer narrow matches: search wide", {}},
+      s.min_matches);
+    v(FieldInfo{"min_static_inliers", "-", 3, 10000,
+                "fewer static pose inliers: fall back to a robust pose / lost", {}},
+      s.min_static_inliers);
+    v(FieldInfo{"front_end_reference", "-", 0, 0,
+                "front-end correlation frames: reference (map), previous (paper) or both",
+                {"reference", "previous", "both"}},
+      s.front_end_reference);
+    v(FieldInfo{"keyframe_max_interval", "frames", 1, 1000, "a keyframe at least this often", {}},
+      s.keyframe_max_interval);
+    v(FieldInfo{"keyframe_min_tracked_ratio", "-", 0.0, 1.0,
+                "static matches below this share of the last keyframe's: new keyframe", {}},
+      s.keyframe_min_tracked_ratio);
+    v(FieldInfo{"keyframe_min_static", "-", 0, 100000, "fewer static matches: new keyframe", {}},
+      s.keyframe_min_static);
+    v(FieldInfo{"max_new_points", "-", 0, 100000, "map points created per keyframe", {}},
+      s.max_new_points);
+    v(FieldInfo{"dynamic_neighbour_radius_px", "px", 0.0, 1000.0,
+                "new points start unmarked when most tracked neighbours within this are dynamic",
+                {}},
+      s.dynamic_neighbour_radius_px);
+    v(FieldInfo{"cull_min_found_ratio", "-", 0.0, 1.0, "found/visible ratio below this: cull",
+                {}},
+      s.cull_min_found_ratio);
+    v(FieldInfo{"cull_min_visible", "-", 1, 100000, "sightings before the ratio is checked", {}},
+      s.cull_min_visible);
+    v(FieldInfo{"lost_frames_before_reset", "frames", 1, 100000,
+                "consecutive lost frames before re-initialising at the last good pose", {}},
+      s.lost_frames_before_reset);
+  }
+};
+
+}  // namespace dslam

@@ -1,0 +1,40 @@
+#include "dslam/core/local_map_matching.h"
+
+#include "dslam/core/matching.h"
+
+namespace dslam {
+
+std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
+                                      const FrameFeatures& features, const PinholeCamera& camera,
+                                      const Eigen::Isometry3d& T_camera_world, double radius_px,
+                                      bool count_visible, std::vector<bool>* feature_taken) {
+  std::vector<ProjectedPoint> projected;
+  std::vector<PointId> projected_ids;
+  for (PointId id : candidates) {
+    MapPoint* point = map->Find(id);
+    if (point == nullptr) continue;
+    const Eigen::Vector3d p_camera = T_camera_world * point->p_world;
+    if (p_camera.z() < 0.1) continue;
+    const Eigen::Vector2d uv = camera.Project(p_camera);
+    if (!camera.InImage(uv)) continue;
+    if (count_visible) ++point->times_visible;
+    ProjectedPoint candidate;
+    candidate.uv_ideal = uv;
+    candidate.descriptor = point->descriptor;
+    projected.push_back(candidate);
+    projected_ids.push_back(id);
+  }
+  ProjectionSearchOptions options;
+  options.radius_px = radius_px;
+  const std::vector<int> found = SearchByProjection(projected, features, options);
+  std::vector<PointMatch> matches;
+  for (size_t k = 0; k < found.size(); ++k) {
+    const int f = found[k];
+    if (f < 0 || (*feature_taken)[f]) continue;
+    (*feature_taken)[f] = true;
+    matches.push_back({projected_ids[k], f});
+  }
+  return matches;
+}
+
+}  // namespace dslam

@@ -1,0 +1,66 @@
+#include "dslam/core/map_point_creation.h"
+
+#include <algorithm>
+
+namespace dslam {
+
+std::vector<bool> DynamicNeighbourhood(const FrameFeatures& features,
+                                       const std::vector<PointMatch>& matches, const Map& map,
+                                       double radius_px) {
+  struct Neighbour {
+    Eigen::Vector2d uv;
+    bool marked;
+  };
+  std::vector<Neighbour> neighbours;
+  for (const PointMatch& match : matches) {
+    const MapPoint* point = map.Find(match.id);
+    if (point) neighbours.push_back({features.features[match.feature].uv_ideal, point->marked});
+  }
+  const double r2 = radius_px * radius_px;
+  std::vector<bool> dynamic(features.features.size(), false);
+  for (size_t f = 0; f < features.features.size(); ++f) {
+    int marked = 0, unmarked = 0;
+    for (const Neighbour& n : neighbours) {
+      if ((n.uv - features.features[f].uv_ideal).squaredNorm() > r2) continue;
+      (n.marked ? marked : unmarked)++;
+    }
+    dynamic[f] = unmarked > marked;
+  }
+  return dynamic;
+}
+
+std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
+                                     const std::vector<bool>& feature_taken,
+                                     const std::vector<bool>& dynamic_neighbourhood,
+                                     const CreationContext& context,
+                                     const TrackingConfig& config, Map* map) {
+  std::vector<int> candidates;
+  for (size_t f = 0; f < features.features.size(); ++f) {
+    if (!feature_taken[f] && features.features[f].measurement) candidates.push_back(f);
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) {
+    return features.features[a].measurement->y_camera.z() <
+           features.features[b].measurement->y_camera.z();
+  });
+  if (static_cast<int>(candidates.size()) > config.max_new_points) {
+    candidates.resize(config.max_new_points);
+  }
+  const Eigen::Matrix3d R = context.T_world_camera.rotation();
+  std::vector<PointId> ids;
+  for (int f : candidates) {
+    const Feature& feature = features.features[f];
+    MapPoint point;
+    point.p_world = context.T_world_camera * feature.measurement->y_camera;
+    point.cov_world = R * feature.measurement->covariance * R.transpose();
+    point.descriptor = features.descriptors.row(f).clone();
+    point.octave = feature.octave;
+    point.marked = !dynamic_neighbourhood[f];
+    point.keyframe_id = context.keyframe_id;
+    point.created_frame = point.last_seen_frame = context.frame_index;
+    point.times_visible = point.times_found = 1;
+    ids.push_back(map->AddPoint(std::move(point)));
+  }
+  return ids;
+}
+
+}  // namespace dslam

@@ -1,0 +1,175 @@
+// The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
+#include <unordered_set>
+
+#include "dslam/core/map_point_creation.h"
+#include "dslam/core/odometry.h"
+
+namespace dslam {
+
+void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
+                                   bool wide) {
+  const TrackingConfig& cfg = config_.tracking;
+  const PinholeCamera& camera = *current->frame->camera;
+  const std::vector<PointId> local = map_.LocalPoints(last_tracked_);
+  const double radius = wide ? cfg.wide_search_radius_px : cfg.search_radius_px;
+  current->matches = MatchLocalMap(&map_, local, current->features, camera, T_camera_world, radius,
+                                   true, &current->feature_taken);
+  if (static_cast<int>(current->matches.size()) >= cfg.min_matches || wide) return;
+  // Too few: the prediction was off (sudden motion). Search the rest with a wide radius.
+  std::unordered_set<PointId> matched;
+  for (const PointMatch& m : current->matches) matched.insert(m.id);
+  std::vector<PointId> rest;
+  for (PointId id : local) {
+    if (!matched.count(id)) rest.push_back(id);
+  }
+  const std::vector<PointMatch> more =
+      MatchLocalMap(&map_, rest, current->features, camera, T_camera_world,
+                    cfg.wide_search_radius_px, false, &current->feature_taken);
+  current->matches.insert(current->matches.end(), more.begin(), more.end());
+}
+
+bool Odometry::EstimateInitialPose(Current* current, FrameResult* result) {
+  const PinholeCamera& camera = *current->frame->camera;
+  const int min_inliers = config_.tracking.min_static_inliers;
+  const Eigen::Isometry3d T_predicted = motion_.Predict(current->frame->stamp_s).inverse();
+  current->pose = EstimatePoseFromMatches(map_, current->matches, current->features, camera, T_predicted,
+                               true, config_);
+  if (current->pose.success && current->pose.num_inliers >= min_inliers) {
+    current->T_camera_world = current->pose.T_camera_world;
+    return true;
+  }
+  // Marked points are too few (people fill the view, or the prediction failed): a robust pose
+  // over all matches beats coasting on the motion model (field notes).
+  current->pose = EstimateRobustPoseFromMatches(map_, current->matches, current->features, camera, config_,
+                                     static_cast<uint32_t>(result->frame_index));
+  if (!current->pose.success || current->pose.num_inliers < min_inliers) return false;
+  current->T_camera_world = current->pose.T_camera_world;
+  current->from_robust_pose = true;
+  return true;
+}
+
+void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
+  if (!config_.static_points.enabled) return;  // the static-world baseline
+  current->static_points = DetermineStaticPointsFrontEnd(
+      map_, current->matches, current->features, current->T_camera_world, previous_,
+      config_.tracking.front_end_reference, config_.static_points);
+  ApplyStaticLabels(current->static_points, current->matches, &map_);
+  const StaticPointsStats& stats = current->static_points.result.stats;
+  result->counts.graph_points = stats.points;
+  result->counts.graph_edges = stats.edges;
+  result->counts.culled_edges = stats.culled_edges;
+}
+
+bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result) {
+  const PinholeCamera& camera = *current->frame->camera;
+  std::unordered_set<PointId> matched;
+  for (const PointMatch& m : current->matches) matched.insert(m.id);
+  std::vector<PointId> rest;
+  for (PointId id : map_.LocalPoints(last_tracked_)) {
+    if (!matched.count(id)) rest.push_back(id);
+  }
+  const std::vector<PointMatch> more =
+      MatchLocalMap(&map_, rest, current->features, camera, current->T_camera_world,
+                    config_.tracking.search_radius_px, false, &current->feature_taken);
+  current->matches.insert(current->matches.end(), more.begin(), more.end());
+
+  PoseResult refined = EstimatePoseFromMatches(map_, current->matches, current->features, camera,
+                                      current->T_camera_world, true, config_);
+  const int min_inliers = config_.tracking.min_static_inliers;
+  if (refined.success && refined.num_inliers >= min_inliers) {
+    current->pose = std::move(refined);
+  } else {
+    current->pose = EstimateRobustPoseFromMatches(map_, current->matches, current->features, camera,
+                                       config_, static_cast<uint32_t>(result->frame_index) + 1u);
+    if (!current->pose.success || current->pose.num_inliers < min_inliers) return false;
+    current->from_robust_pose = true;
+  }
+  current->T_camera_world = current->pose.T_camera_world;
+  result->state = current->from_robust_pose ? TrackingState::kRecovered : TrackingState::kTracking;
+  return true;
+}
+
+void Odometry::UpdateMatchedPoints(const Current& current) {
+  const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
+  const Eigen::Matrix3d R = T_world_camera.rotation();
+  previous_ = FrameMeasurements();
+  previous_.T_camera_world = current.T_camera_world;
+  last_tracked_.clear();
+  for (const PointMatch& match : current.matches) {
+    MapPoint* point = map_.Find(match.id);
+    if (point == nullptr) continue;
+    ++point->times_found;
+    point->last_seen_frame = frame_index_ - 1;
+    last_tracked_.push_back(match.id);
+    const auto& measurement = current.features.features[match.feature].measurement;
+    if (!measurement) continue;
+    previous_.by_point.emplace(match.id, *measurement);
+    if (!point->marked) {
+      // Unmarked points follow their object (Sec. V-C, update): matching keeps claiming its
+      // features, so they do not come back as new marked points.
+      point->p_world = T_world_camera * measurement->y_camera;
+      point->cov_world = R * measurement->covariance * R.transpose();
+    }
+  }
+}
+
+bool Odometry::NeedKeyFrame(const Current& current, int static_matches) const {
+  const TrackingConfig& cfg = config_.tracking;
+  const int since = frame_index_ - 1 - last_keyframe_frame_;
+  return since >= cfg.keyframe_max_interval || static_matches < cfg.keyframe_min_static ||
+         static_matches < cfg.keyframe_min_tracked_ratio * last_keyframe_static_;
+}
+
+int Odometry::MakeKeyFrame(const Current& current) {
+  const TrackingConfig& cfg = config_.tracking;
+  const int frame_index = frame_index_ - 1;
+  const std::vector<bool> dynamic =
+      config_.static_points.enabled
+          ? DynamicNeighbourhood(current.features, current.matches, map_,
+                                 cfg.dynamic_neighbour_radius_px)
+          : std::vector<bool>(current.features.features.size(), false);
+  CreationContext context{current.T_camera_world.inverse(), frame_index,
+                          map_.keyframes().empty() ? 0 : map_.keyframes().back().id + 1};
+  const std::vector<PointId> created = CreateMapPoints(current.features, current.feature_taken,
+                                                       dynamic, context, cfg, &map_);
+  KeyFrame keyframe;
+  keyframe.frame_index = frame_index;
+  keyframe.stamp_s = current.frame->stamp_s;
+  keyframe.T_world_camera = context.T_world_camera;
+  keyframe.points = last_tracked_;
+  keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
+  map_.AddKeyFrame(keyframe, cfg.window_keyframes);
+  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible);
+  last_keyframe_frame_ = frame_index;
+  last_keyframe_static_ = current.pose.num_inliers + static_cast<int>(created.size());
+  last_tracked_.insert(last_tracked_.end(), created.begin(), created.end());
+  return static_cast<int>(created.size());
+}
+
+void Odometry::Summarise(const Current& current, FrameResult* result) const {
+  FrameCounts& counts = result->counts;
+  counts.features = static_cast<int>(current.features.features.size());
+  counts.features_with_depth = current.features.NumWithDepth();
+  counts.tracked = static_cast<int>(current.matches.size());
+  counts.pose_inliers = current.pose.num_inliers;
+  counts.map_points = static_cast<int>(map_.size());
+  for (const PointMatch& match : current.matches) {
+    const MapPoint* point = map_.Find(match.id);
+    if (point == nullptr) continue;
+    (point->marked ? counts.static_points : counts.dynamic_points)++;
+    ObservedPoint observed;
+    observed.id = match.id;
+    observed.uv_raw = current.features.features[match.feature].uv_raw;
+    observed.p_world = point->p_world;
+    observed.is_static = point->marked;
+    result->points.push_back(observed);
+  }
+  const StaticPointsResult& spd = current.static_points.result;
+  for (size_t e = 0; e < spd.edges.size(); ++e) {
+    const GraphEdge& edge = spd.edges[e];
+    result->edges.push_back(
+        {spd.points_world[edge.i], spd.points_world[edge.j], static_cast<bool>(spd.edge_kept[e])});
+  }
+}
+
+}  // namespace dslam
