@@ -1,5 +1,6 @@
 // dslam_synth: renders a synthetic RGB-D sequence in the TUM layout (see docs/readme/synth.md).
 //   dslam_synth --scenario NAME [--frames N] [--seed S] [--camera MOTION] --output FOLDER
+//               [--bag OUT.bag]   (then converts FOLDER with `rosrun dslam tum_to_bag`)
 //   dslam_synth --scenario NAME [--seed S] --preview OUT.png [--preview-frame K]
 //   dslam_synth --list
 #include <cstdio>
@@ -17,7 +18,8 @@ namespace {
 void PrintUsage() {
   std::cerr << "usage: dslam_synth --scenario NAME [--frames N] [--seed S] [--camera "
                "static|xyz|rpy|halfsphere]\n"
-               "                   [--output FOLDER] [--preview OUT.png [--preview-frame K]]\n"
+               "                   [--output FOLDER [--bag OUT.bag]] [--preview OUT.png "
+               "[--preview-frame K]]\n"
                "       dslam_synth --list\n";
 }
 
@@ -57,6 +59,14 @@ int Run(const std::map<std::string, std::string>& args) {
       "%.3f\n",
       s.frames, s.seconds, 1000.0 * s.seconds / std::max(1, s.frames), s.coverage_mean,
       s.coverage_min, s.coverage_max);
+  if (args.count("bag")) {
+    // The bag is made by the package's tum_to_bag (needs the ROS environment, as rosrun gives).
+    const std::string command =
+        "rosrun dslam tum_to_bag '" + args.at("output") + "' '" + args.at("bag") + "'";
+    std::printf("converting: %s\n", command.c_str());
+    std::fflush(stdout);
+    if (std::system(command.c_str()) != 0) throw std::runtime_error("tum_to_bag failed");
+  }
   return 0;
 }
 
