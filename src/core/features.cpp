@@ -164,7 +164,11 @@ FrameFeatures ExtractFeatures(const RgbdFrame& frame, const FeaturesConfig& conf
     f.octave = kp.octave;
     f.angle_deg = kp.angle;
     f.response = kp.response;
-    f.measurement = MeasurePoint(frame.depth_m, f.uv_raw, f.uv_ideal, camera, depth_noise);
+    // A keypoint found at pyramid level o is localised to about scale^o pixels (ORB-SLAM2's
+    // sigma^2 = scale^(2 o)), so its lateral noise grows with the level.
+    DepthNoiseConfig level_noise = depth_noise;
+    level_noise.pixel_sigma_px *= out.octave_scale[kp.octave];
+    f.measurement = MeasurePoint(frame.depth_m, f.uv_raw, f.uv_ideal, camera, level_noise);
     out.features.push_back(std::move(f));
   }
   return out;

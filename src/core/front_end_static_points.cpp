@@ -19,28 +19,28 @@ void AddObservation(int point, int frame, const Eigen::Vector3d& y, const Eigen:
 
 FrontEndStaticPoints DetermineStaticPointsFrontEnd(
     const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
-    const Eigen::Isometry3d& T_camera_world, const FrameMeasurements& previous,
-    const std::string& reference, const StaticPointsConfig& config) {
-  const bool use_map = reference != "previous";
-  const bool use_previous = reference != "reference";
+    const Eigen::Isometry3d& T_camera_world,
+    const std::vector<const FrameMeasurements*>& reference_frames,
+    const StaticPointsConfig& config) {
   FrontEndStaticPoints out;
   CorrelationInput input;
-  // Frame 0: current. Frame 1: the map pseudo-frame (identity). Frame 2: previous frame.
-  input.T_camera_world = {T_camera_world, Eigen::Isometry3d::Identity(),
-                          previous.T_camera_world};
+  input.T_camera_world.push_back(T_camera_world);  // frame 0: current
+  for (const FrameMeasurements* frame : reference_frames) {
+    input.T_camera_world.push_back(frame->T_camera_world);
+  }
   for (size_t m = 0; m < matches.size(); ++m) {
     const MapPoint* point = map.Find(matches[m].id);
     const auto& measurement = features.features[matches[m].feature].measurement;
     if (point == nullptr || !point->marked || !measurement) continue;
-    const auto prev = previous.by_point.find(point->id);
-    if (use_previous && !use_map && prev == previous.by_point.end()) continue;
     const int index = static_cast<int>(input.points_world.size());
     input.points_world.push_back(point->p_world);
     out.graph_match.push_back(static_cast<int>(m));
     AddObservation(index, 0, measurement->y_camera, measurement->covariance, &input);
-    if (use_map) AddObservation(index, 1, point->p_world, point->cov_world, &input);
-    if (use_previous && prev != previous.by_point.end()) {
-      AddObservation(index, 2, prev->second.y_camera, prev->second.covariance, &input);
+    for (size_t k = 0; k < reference_frames.size(); ++k) {
+      const auto found = reference_frames[k]->by_point.find(point->id);
+      if (found == reference_frames[k]->by_point.end()) continue;
+      AddObservation(index, static_cast<int>(k) + 1, found->second.y_camera,
+                     found->second.covariance, &input);
     }
   }
   if (static_cast<int>(input.points_world.size()) < kMinGraphPoints) return out;
@@ -49,20 +49,33 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
   return out;
 }
 
-int ApplyStaticLabels(const FrontEndStaticPoints& front_end,
-                      const std::vector<PointMatch>& matches, Map* map) {
-  if (!front_end.ran || front_end.result.static_component < 0) return 0;
-  int unmarked = 0;
+std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
+                                    const std::vector<PointMatch>& matches,
+                                    int isolated_frames_to_unmark, Map* map) {
+  std::vector<bool> excluded(matches.size(), false);
+  if (!front_end.ran || front_end.result.static_component < 0) return excluded;
   for (size_t g = 0; g < front_end.graph_match.size(); ++g) {
-    const PointLabel label = front_end.result.labels[g];
-    if (label != PointLabel::kDynamic && label != PointLabel::kIsolated) continue;
-    MapPoint* point = map->Find(matches[front_end.graph_match[g]].id);
-    if (point != nullptr && point->marked) {
-      point->marked = false;
-      ++unmarked;
+    const int m = front_end.graph_match[g];
+    MapPoint* point = map->Find(matches[m].id);
+    if (point == nullptr) continue;
+    switch (front_end.result.labels[g]) {
+      case PointLabel::kStatic:
+        point->isolated_frames = 0;
+        break;
+      case PointLabel::kDynamic:
+        point->marked = false;
+        excluded[m] = true;
+        break;
+      case PointLabel::kIsolated:
+        excluded[m] = true;
+        if (++point->isolated_frames >= isolated_frames_to_unmark) point->marked = false;
+        break;
+      case PointLabel::kUndecided:
+      case PointLabel::kUnverified:
+        break;
     }
   }
-  return unmarked;
+  return excluded;
 }
 
 }  // namespace dslam

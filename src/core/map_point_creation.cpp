@@ -54,6 +54,7 @@ std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
     point.cov_world = R * feature.measurement->covariance * R.transpose();
     point.descriptor = features.descriptors.row(f).clone();
     point.octave = feature.octave;
+    point.created_feature = f;
     point.marked = !dynamic_neighbourhood[f];
     point.keyframe_id = context.keyframe_id;
     point.created_frame = point.last_seen_frame = context.frame_index;

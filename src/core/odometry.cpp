@@ -106,11 +106,12 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   keyframe.stamp_s = result.stamp_s;
   keyframe.T_world_camera = motion_.last_pose();
   keyframe.points = ids;
-  map_.AddKeyFrame(keyframe, config_.tracking.window_keyframes);
+  previous_ = FrameMeasurements();
+  keyframe.measurements = MeasurementsOf(*current, ids);
+  map_.AddKeyFrame(std::move(keyframe), config_.tracking.window_keyframes);
   last_keyframe_frame_ = result.frame_index;
   last_keyframe_static_ = static_cast<int>(ids.size());
   last_tracked_ = ids;
-  previous_ = FrameMeasurements();
   initialised_ = true;
   lost_frames_ = 0;
   motion_.Update(result.stamp_s, motion_.last_pose());

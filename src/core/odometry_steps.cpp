@@ -1,4 +1,5 @@
 // The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
+#include <algorithm>
 #include <unordered_set>
 
 #include "dslam/core/map_point_creation.h"
@@ -32,8 +33,8 @@ bool Odometry::EstimateInitialPose(Current* current, FrameResult* result) {
   const PinholeCamera& camera = *current->frame->camera;
   const int min_inliers = config_.tracking.min_static_inliers;
   const Eigen::Isometry3d T_predicted = motion_.Predict(current->frame->stamp_s).inverse();
-  current->pose = EstimatePoseFromMatches(map_, current->matches, current->features, camera, T_predicted,
-                               true, config_);
+  current->pose = EstimatePoseFromMatches(map_, current->matches, current->features, camera,
+                                          T_predicted, true, {}, config_);
   if (current->pose.success && current->pose.num_inliers >= min_inliers) {
     current->T_camera_world = current->pose.T_camera_world;
     return true;
@@ -48,12 +49,36 @@ bool Odometry::EstimateInitialPose(Current* current, FrameResult* result) {
   return true;
 }
 
+std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const {
+  const TrackingConfig& cfg = config_.tracking;
+  std::vector<const FrameMeasurements*> frames;
+  if (cfg.front_end_reference != "previous") {
+    // Keyframes at least front_end_min_age_frames old (a short baseline hides walking people),
+    // spread evenly from the oldest (longest baseline) to the newest eligible one.
+    const auto& keyframes = map_.keyframes();
+    const int now = frame_index_ - 1;
+    int n = static_cast<int>(keyframes.size());
+    while (n > 1 && now - keyframes[n - 1].frame_index < cfg.front_end_min_age_frames) --n;
+    const int k = std::min(n, cfg.front_end_keyframes);
+    for (int i = 0; i < k; ++i) {
+      const int index = k == 1 ? 0 : i * (n - 1) / (k - 1);
+      frames.push_back(&keyframes[index].measurements);
+    }
+  }
+  if (cfg.front_end_reference != "keyframes" && !previous_.by_point.empty()) {
+    frames.push_back(&previous_);
+  }
+  return frames;
+}
+
 void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
   if (!config_.static_points.enabled) return;  // the static-world baseline
-  current->static_points = DetermineStaticPointsFrontEnd(
-      map_, current->matches, current->features, current->T_camera_world, previous_,
-      config_.tracking.front_end_reference, config_.static_points);
-  ApplyStaticLabels(current->static_points, current->matches, &map_);
+  current->static_points =
+      DetermineStaticPointsFrontEnd(map_, current->matches, current->features,
+                                    current->T_camera_world, FrontEndReferenceFrames(),
+                                    config_.static_points);
+  current->excluded = ApplyStaticLabels(current->static_points, current->matches,
+                                        config_.tracking.isolated_frames_to_unmark, &map_);
   const StaticPointsStats& stats = current->static_points.result.stats;
   result->counts.graph_points = stats.points;
   result->counts.graph_edges = stats.edges;
@@ -73,8 +98,10 @@ bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result)
                     config_.tracking.search_radius_px, false, &current->feature_taken);
   current->matches.insert(current->matches.end(), more.begin(), more.end());
 
+  current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged
   PoseResult refined = EstimatePoseFromMatches(map_, current->matches, current->features, camera,
-                                      current->T_camera_world, true, config_);
+                                               current->T_camera_world, true, current->excluded,
+                                               config_);
   const int min_inliers = config_.tracking.min_static_inliers;
   if (refined.success && refined.num_inliers >= min_inliers) {
     current->pose = std::move(refined);
@@ -116,7 +143,9 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
 bool Odometry::NeedKeyFrame(const Current& current, int static_matches) const {
   const TrackingConfig& cfg = config_.tracking;
   const int since = frame_index_ - 1 - last_keyframe_frame_;
-  return since >= cfg.keyframe_max_interval || static_matches < cfg.keyframe_min_static ||
+  if (since >= cfg.keyframe_max_interval) return true;
+  if (since < cfg.keyframe_min_interval) return false;
+  return static_matches < cfg.keyframe_min_static ||
          static_matches < cfg.keyframe_min_tracked_ratio * last_keyframe_static_;
 }
 
@@ -138,12 +167,25 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.T_world_camera = context.T_world_camera;
   keyframe.points = last_tracked_;
   keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
-  map_.AddKeyFrame(keyframe, cfg.window_keyframes);
+  keyframe.measurements = MeasurementsOf(current, created);
+  map_.AddKeyFrame(std::move(keyframe), cfg.window_keyframes);
   map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible);
   last_keyframe_frame_ = frame_index;
-  last_keyframe_static_ = current.pose.num_inliers + static_cast<int>(created.size());
+  last_keyframe_static_ = current.pose.num_inliers;
   last_tracked_.insert(last_tracked_.end(), created.begin(), created.end());
   return static_cast<int>(created.size());
+}
+
+FrameMeasurements Odometry::MeasurementsOf(const Current& current,
+                                           const std::vector<PointId>& created) const {
+  FrameMeasurements out = previous_;  // the matched points' measurements of this frame
+  out.T_camera_world = current.T_camera_world;
+  for (PointId id : created) {
+    const MapPoint* point = map_.Find(id);
+    const auto& measurement = current.features.features[point->created_feature].measurement;
+    out.by_point.emplace(id, *measurement);
+  }
+  return out;
 }
 
 void Odometry::Summarise(const Current& current, FrameResult* result) const {

@@ -13,11 +13,13 @@ struct Observations {
 
 Observations BuildObservations(const Map& map, const std::vector<PointMatch>& matches,
                                const FrameFeatures& features, const Eigen::Matrix3d& R_camera_world,
-                               bool marked_only, double pixel_sigma_px) {
+                               bool marked_only, const std::vector<bool>& excluded,
+                               double pixel_sigma_px) {
   Observations out;
   for (size_t m = 0; m < matches.size(); ++m) {
     const MapPoint* point = map.Find(matches[m].id);
     if (point == nullptr || (marked_only && !point->marked)) continue;
+    if (!excluded.empty() && excluded[m]) continue;
     const Feature& feature = features.features[matches[m].feature];
     if (feature.measurement) {
       PointMeasurement measurement = *feature.measurement;
@@ -48,10 +50,10 @@ PoseResult ToMatches(PoseResult result, const Observations& obs, size_t num_matc
 PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
                                    const FrameFeatures& features, const PinholeCamera& camera,
                                    const Eigen::Isometry3d& T_camera_world_init, bool marked_only,
-                                   const Config& config) {
+                                   const std::vector<bool>& excluded, const Config& config) {
   const Observations obs =
       BuildObservations(map, matches, features, T_camera_world_init.rotation(), marked_only,
-                        config.depth_noise.pixel_sigma_px);
+                        excluded, config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePose(obs.observations, T_camera_world_init, camera, config.pose), obs,
                    matches.size());
 }
@@ -62,7 +64,7 @@ PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<Point
                                          uint32_t seed) {
   // The map covariance is rotated with an unknown pose here: leave it to RANSAC's extra sigma.
   const Observations obs = BuildObservations(map, matches, features, Eigen::Matrix3d::Zero(),
-                                             false, config.depth_noise.pixel_sigma_px);
+                                             false, {}, config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePoseRobust(obs.observations, camera, config.pose, seed), obs,
                    matches.size());
 }

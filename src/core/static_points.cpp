@@ -58,7 +58,20 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
 
   const auto components_start = Clock::now();
   const int num_points = static_cast<int>(input.points_world.size());
-  result.component = ConnectedComponents(num_points, result.edges, result.edge_kept);
+  // Only edges that were tested (measured in enough frames) and passed connect points: an
+  // untested edge between a new point on a walking person and the wall behind it would otherwise
+  // glue the person to the static world.
+  std::vector<bool> connects(result.edges.size());
+  std::vector<bool> has_verified_edge(num_points, false);
+  result.edge_verified.resize(result.edges.size());
+  for (size_t e = 0; e < result.edges.size(); ++e) {
+    result.edge_verified[e] = culling.edge_measurements[e] >= config.min_edge_measurements;
+    connects[e] = result.edge_kept[e] && result.edge_verified[e];
+    if (result.edge_verified[e]) {
+      has_verified_edge[result.edges[e].i] = has_verified_edge[result.edges[e].j] = true;
+    }
+  }
+  result.component = ConnectedComponents(num_points, result.edges, connects);
   StaticSelectionOptions selection_options;
   selection_options.min_component_points = config.min_component_points;
   selection_options.min_static_points = config.min_static_points;
@@ -66,6 +79,9 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
   StaticSelection selection =
       SelectStaticComponent(result.points_world, result.component, selection_options);
   result.labels = std::move(selection.labels);
+  for (int i = 0; i < num_points; ++i) {
+    if (!has_verified_edge[i]) result.labels[i] = PointLabel::kUnverified;
+  }
   result.static_component = selection.static_component;
   result.ambiguous = selection.ambiguous;
   result.stats.components_ms = MsSince(components_start);

@@ -9,7 +9,7 @@ namespace dslam {
 
 /// RGB-D point measurement noise (paper Sec. V-A; Khoshelham depth noise, Dryanovski mixture).
 struct DepthNoiseConfig {
-  double pixel_sigma_px = 1.0;         ///< [px] sigma_u = sigma_v of the keypoint position
+  double pixel_sigma_px = 1.0;         ///< [px] sigma_u = sigma_v at level 0 (x scale^level)
   double sigma_d_quadratic = 1.4e-3;   ///< [1/m] a in sigma_d = a d^2 + b
   double sigma_d_constant_m = 1.0e-3;  ///< [m] b in sigma_d = a d^2 + b
   double min_depth_m = 0.3;            ///< [m] smaller depths count as no measurement
@@ -18,7 +18,7 @@ struct DepthNoiseConfig {
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    v(FieldInfo{"pixel_sigma_px", "px", 0.01, 10.0, "keypoint sigma_u = sigma_v", {}},
+    v(FieldInfo{"pixel_sigma_px", "px", 0.01, 10.0, "keypoint sigma_u = sigma_v at pyramid level 0 (x scale^level)", {}},
       s.pixel_sigma_px);
     v(FieldInfo{"sigma_d_quadratic", "1/m", 0.0, 0.1, "a in depth sigma_d = a d^2 + b", {}},
       s.sigma_d_quadratic);

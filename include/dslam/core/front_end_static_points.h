@@ -4,15 +4,15 @@
 // graph whose edges are checked against point-correlation measurements of two frames; points
 // outside the largest-volume component lose their mark.
 //
-// Which two frames: the paper compares the previous frame with the current one. At 30 Hz that
-// baseline is too short to see walking people (the edge changes are the size of the depth noise,
-// field notes), so by default ("reference") the first frame is each point's reference keyframe
-// observation, held as the map point position p_world with its covariance (a pseudo-frame with
-// T_camera_world = identity): the baseline is then the time since the point was created, up to
-// the keyframe window. "previous" is the paper's choice and "both" uses all three.
+// Which frames: the paper compares the previous frame with the current one. At 30 Hz that
+// baseline is too short to see walking people (edge changes are the size of the depth noise,
+// field notes), so by default ("keyframes") the current frame is compared with up to
+// `front_end_keyframes` keyframes spread over the local window, in which the points were measured
+// when the keyframe was made: the baseline is then up to the window's time span. Measurements of
+// one frame share that frame's pose, so only each frame's rotation enters z_ijk = y_ik - y_jk
+// (translation cancels) and drift between keyframes cannot fake inconsistency. "previous" is the
+// paper's choice and "both" uses the keyframes and the previous frame.
 
-#include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "dslam/core/config.h"
@@ -22,12 +22,6 @@
 
 namespace dslam {
 
-/// Measurements of one frame that the next frame's front end can compare with.
-struct FrameMeasurements {
-  Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
-  std::unordered_map<PointId, PointMeasurement> by_point;  ///< y and C per matched point
-};
-
 /// Output of the front end: the determination's result and which matches it covered.
 struct FrontEndStaticPoints {
   StaticPointsResult result;
@@ -35,17 +29,24 @@ struct FrontEndStaticPoints {
   bool ran = false;              ///< false when too few points had the needed measurements
 };
 
-/// Builds the problem from the marked matched points with a depth measurement (and, for
-/// "previous"/"both", a measurement in `previous`), runs DetermineStaticPoints and returns the
-/// result. `reference` is "reference", "previous" or "both" (TrackingConfig).
+/// Builds the problem over the marked matched points with a depth measurement in the current
+/// frame (pose `T_camera_world`) and their measurements in `reference_frames` (keyframes and/or
+/// the previous frame, chosen by the caller), runs DetermineStaticPoints and returns the result.
 FrontEndStaticPoints DetermineStaticPointsFrontEnd(
     const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
-    const Eigen::Isometry3d& T_camera_world, const FrameMeasurements& previous,
-    const std::string& reference, const StaticPointsConfig& config);
+    const Eigen::Isometry3d& T_camera_world,
+    const std::vector<const FrameMeasurements*>& reference_frames,
+    const StaticPointsConfig& config);
 
-/// Unmarks the points labelled dynamic or isolated (their correlations were all inconsistent).
-/// Returns the number of points unmarked. Nothing changes when no static component was chosen.
-int ApplyStaticLabels(const FrontEndStaticPoints& front_end,
-                      const std::vector<PointMatch>& matches, Map* map);
+/// Applies the labels (nothing changes when no static component was chosen):
+/// - dynamic (a member of another component: a group of points that moved together) -> unmarked;
+/// - isolated (every edge inconsistent): most often a false match rather than a moving point, so
+///   the match is only excluded from this frame's pose; a point isolated in
+///   `isolated_frames_to_unmark` consecutive frames is unmarked;
+/// - static -> its isolation count is cleared.
+/// Returns, parallel to `matches`, whether each match must stay out of the pose.
+std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
+                                    const std::vector<PointMatch>& matches,
+                                    int isolated_frames_to_unmark, Map* map);
 
 }  // namespace dslam

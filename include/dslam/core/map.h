@@ -11,6 +11,8 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
+#include "dslam/core/depth_uncertainty.h"
+
 namespace dslam {
 
 using PointId = int64_t;
@@ -22,12 +24,21 @@ struct MapPoint {
   Eigen::Matrix3d cov_world = Eigen::Matrix3d::Identity();  ///< position covariance [m^2]
   cv::Mat descriptor;    ///< 1x32 CV_8U ORB descriptor of the observation that created it
   int octave = 0;        ///< pyramid level of that observation
+  int created_feature = -1;  ///< index of that observation's feature in its frame
   bool marked = true;    ///< trusted static: only marked points drive motion estimation
   int keyframe_id = -1;  ///< keyframe that created the point (its reference observation)
   int created_frame = 0;    ///< frame index of creation
   int last_seen_frame = 0;  ///< last frame index where it was matched
   int times_visible = 0;    ///< frames where it projected into the image
   int times_found = 0;      ///< frames where it was matched
+  int isolated_frames = 0;  ///< consecutive frames in which all its graph edges were inconsistent
+};
+
+/// RGB-D measurements of map points in one frame, with that frame's pose: the raw material of
+/// point-correlation measurements z_ijk = y_ik - y_jk (paper Eq. meas_con_imp).
+struct FrameMeasurements {
+  Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();  ///< world -> optical frame
+  std::unordered_map<PointId, PointMeasurement> by_point;  ///< y and C per measured point
 };
 
 /// A keyframe: the pose of a frame that created map points.
@@ -37,6 +48,7 @@ struct KeyFrame {
   double stamp_s = 0.0;         ///< [s]
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
   std::vector<PointId> points;  ///< map points it observed (created or matched) when it was made
+  FrameMeasurements measurements;  ///< y and C of those points measured with depth in it
 };
 
 /// Map points and a window of recent keyframes.

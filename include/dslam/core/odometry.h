@@ -39,6 +39,7 @@ class Odometry {
     FrameFeatures features;
     std::vector<bool> feature_taken;
     std::vector<PointMatch> matches;
+    std::vector<bool> excluded;  ///< per match: left out of the refined pose (isolated/dynamic)
     Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
     PoseResult pose;
     FrontEndStaticPoints static_points;
@@ -49,11 +50,14 @@ class Odometry {
   FrameResult Initialise(Current* current, FrameResult result);
   void MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world, bool wide);
   bool EstimateInitialPose(Current* current, FrameResult* result);
+  std::vector<const FrameMeasurements*> FrontEndReferenceFrames() const;
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(const Current& current, int static_matches) const;
   int MakeKeyFrame(const Current& current);
+  FrameMeasurements MeasurementsOf(const Current& current,
+                                   const std::vector<PointId>& created) const;
   FrameResult Lost(Current* current, FrameResult result, const char* why);
   void Summarise(const Current& current, FrameResult* result) const;
 

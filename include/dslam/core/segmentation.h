@@ -26,6 +26,7 @@ enum class PointLabel {
   kDynamic,    ///< member of another component with at least 2 points
   kIsolated,   ///< no kept edge (all its correlations were inconsistent, or it had none)
   kUndecided,  ///< no static component could be selected (see SelectStaticComponent)
+  kUnverified,  ///< none of its edges had enough measurements to be tested (DetermineStaticPoints)
 };
 
 /// Rules for choosing the static component.

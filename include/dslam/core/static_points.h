@@ -37,6 +37,7 @@ struct StaticPointsResult {
   std::vector<int> component;                 ///< component id per input point
   std::vector<GraphEdge> edges;               ///< Delaunay graph
   std::vector<bool> edge_kept;                ///< parallel to edges; false: inconsistent
+  std::vector<bool> edge_verified;  ///< parallel to edges; measured in >= min_edge_measurements
   std::vector<Eigen::Vector3d> points_world;  ///< [m] optimised (least_squares) or input points
   int static_component = -1;                  ///< -1: no static component (all kUndecided)
   bool ambiguous = false;                     ///< a second component had a similar volume

@@ -26,6 +26,9 @@ struct StaticPointsConfig {
   double prior_sigma_m = 1.0;
   /// [-] an edge is inconsistent when fewer than this share of its measurements are inliers.
   double min_inlier_fraction = 1.0;
+  /// [-] an edge measured in fewer frames is untested: it connects nothing, and a point with only
+  /// untested edges keeps its label (kUnverified). 0 or 1: every edge connects (paper).
+  int min_edge_measurements = 2;
   /// [-] components with fewer points never count as the static one.
   int min_component_points = 4;
   /// [-] if the largest-volume component has fewer points, no static component is chosen.
@@ -53,6 +56,9 @@ struct StaticPointsConfig {
     v(FieldInfo{"min_inlier_fraction", "-", 0.0, 1.0,
                 "an edge with a smaller share of inlier measurements is inconsistent", {}},
       s.min_inlier_fraction);
+    v(FieldInfo{"min_edge_measurements", "-", 0, 1000,
+                "edges measured in fewer frames are untested and connect nothing", {}},
+      s.min_edge_measurements);
     v(FieldInfo{"min_component_points", "-", 1, 1000000,
                 "smaller components are never chosen as static", {}},
       s.min_component_points);

@@ -15,17 +15,21 @@ struct TrackingConfig {
   double wide_search_radius_px = 30.0;  ///< [px] radius when the narrow search finds too few
   int min_matches = 40;              ///< [-] fewer matches in the narrow search: search wide
   int min_static_inliers = 20;       ///< [-] fewer static inliers: the pose is not trusted
-  /// Frames the front-end point correlations compare: "reference" (the map point positions,
-  /// i.e. each point's reference keyframe observation, vs the current frame), "previous" (the
-  /// paper: previous frame vs current frame) or "both".
-  std::string front_end_reference = "reference";
+  /// Frames the front-end point correlations compare with the current one: "keyframes" (up to
+  /// front_end_keyframes keyframes spread over the window), "previous" (the paper: the previous
+  /// frame) or "both".
+  std::string front_end_reference = "keyframes";
+  int front_end_keyframes = 4;       ///< [-] keyframes used by "keyframes" / "both"
+  int front_end_min_age_frames = 5;  ///< [frames] younger keyframes are not used (too short)
   int keyframe_max_interval = 10;    ///< [frames] a keyframe at least this often
+  int keyframe_min_interval = 3;     ///< [frames] and at most this often
   double keyframe_min_tracked_ratio = 0.7;  ///< [-] static matches below this x the last keyframe's
   int keyframe_min_static = 150;     ///< [-] fewer static matches: new keyframe
   int max_new_points = 400;          ///< [-] map points created per keyframe at most
   double dynamic_neighbour_radius_px = 40.0;  ///< [px] neighbourhood for new-point labels
   double cull_min_found_ratio = 0.25;  ///< [-] found/visible below this after cull_min_visible
   int cull_min_visible = 8;          ///< [-] sightings before the found ratio is checked
+  int isolated_frames_to_unmark = 3;  ///< [frames] isolated this often in a row: unmarked
   int lost_frames_before_reset = 10;  ///< [frames] lost this long: re-initialise at last pose
 
   template <typename Self, typename Visitor>
@@ -43,9 +47,17 @@ struct TrackingConfig {
                 "fewer static pose inliers: fall back to a robust pose / lost", {}},
       s.min_static_inliers);
     v(FieldInfo{"front_end_reference", "-", 0, 0,
-                "front-end correlation frames: reference (map), previous (paper) or both",
-                {"reference", "previous", "both"}},
+                "frames the front-end correlations compare with: keyframes, previous (paper) or both",
+                {"keyframes", "previous", "both"}},
       s.front_end_reference);
+    v(FieldInfo{"front_end_keyframes", "-", 1, 100,
+                "keyframes spread over the window used by the front end", {}},
+      s.front_end_keyframes);
+    v(FieldInfo{"front_end_min_age_frames", "frames", 0, 10000,
+                "keyframes younger than this are not compared by the front end", {}},
+      s.front_end_min_age_frames);
+    v(FieldInfo{"keyframe_min_interval", "frames", 1, 1000, "a keyframe at most this often", {}},
+      s.keyframe_min_interval);
     v(FieldInfo{"keyframe_max_interval", "frames", 1, 1000, "a keyframe at least this often", {}},
       s.keyframe_max_interval);
     v(FieldInfo{"keyframe_min_tracked_ratio", "-", 0.0, 1.0,
@@ -64,6 +76,11 @@ struct TrackingConfig {
       s.cull_min_found_ratio);
     v(FieldInfo{"cull_min_visible", "-", 1, 100000, "sightings before the ratio is checked", {}},
       s.cull_min_visible);
+    v(FieldInfo{"isolated_frames_to_unmark", "frames", 1, 1000,
+                "a point whose graph edges are all inconsistent this many frames in a row is "
+                "unmarked (once: probably a false match, only left out of that frame's pose)",
+                {}},
+      s.isolated_frames_to_unmark);
     v(FieldInfo{"lost_frames_before_reset", "frames", 1, 100000,
                 "consecutive lost frames before re-initialising at the last good pose", {}},
       s.lost_frames_before_reset);
