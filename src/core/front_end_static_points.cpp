@@ -31,7 +31,7 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
   for (size_t m = 0; m < matches.size(); ++m) {
     const MapPoint* point = map.Find(matches[m].id);
     const auto& measurement = features.features[matches[m].feature].measurement;
-    if (point == nullptr || !point->marked || !measurement) continue;
+    if (point == nullptr || !measurement) continue;
     const int index = static_cast<int>(input.points_world.size());
     input.points_world.push_back(point->p_world);
     out.graph_match.push_back(static_cast<int>(m));
@@ -51,7 +51,8 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
 
 std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
                                     const std::vector<PointMatch>& matches,
-                                    int isolated_frames_to_unmark, Map* map) {
+                                    int isolated_frames_to_unmark, int frame_index,
+                                    int verify_frames, Map* map) {
   std::vector<bool> excluded(matches.size(), false);
   if (!front_end.ran || front_end.result.static_component < 0) return excluded;
   for (size_t g = 0; g < front_end.graph_match.size(); ++g) {
@@ -61,9 +62,12 @@ std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
     switch (front_end.result.labels[g]) {
       case PointLabel::kStatic:
         point->isolated_frames = 0;
+        point->marked = true;  // consistent with the static world again (e.g. wrongly unmarked)
+        if (frame_index - point->created_frame >= verify_frames) point->candidate = false;
         break;
       case PointLabel::kDynamic:
         point->marked = false;
+        point->candidate = false;
         excluded[m] = true;
         break;
       case PointLabel::kIsolated:

@@ -1,8 +1,23 @@
 #include "dslam/core/local_map_matching.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "dslam/core/matching.h"
 
 namespace dslam {
+namespace {
+
+// Pyramid level at which a point seen at `distance_m` should appear: its creation level shifted
+// by the change of apparent size (ORB-SLAM2's PredictScale); -1 when unknown.
+int PredictOctave(const MapPoint& point, double distance_m, const std::vector<double>& scales) {
+  if (point.reference_distance_m <= 0.0 || scales.size() < 2) return -1;
+  const double shift = std::log(point.reference_distance_m / distance_m) / std::log(scales[1]);
+  const int octave = point.octave + static_cast<int>(std::lround(shift));
+  return std::clamp(octave, 0, static_cast<int>(scales.size()) - 1);
+}
+
+}  // namespace
 
 std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
                                       const FrameFeatures& features, const PinholeCamera& camera,
@@ -21,6 +36,7 @@ std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& cand
     ProjectedPoint candidate;
     candidate.uv_ideal = uv;
     candidate.descriptor = point->descriptor;
+    candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), features.octave_scale);
     projected.push_back(candidate);
     projected_ids.push_back(id);
   }

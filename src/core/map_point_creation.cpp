@@ -55,7 +55,9 @@ std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
     point.descriptor = features.descriptors.row(f).clone();
     point.octave = feature.octave;
     point.created_feature = f;
+    point.reference_distance_m = feature.measurement->y_camera.norm();
     point.marked = !dynamic_neighbourhood[f];
+    point.candidate = point.marked && context.new_points_are_candidates;
     point.keyframe_id = context.keyframe_id;
     point.created_frame = point.last_seen_frame = context.frame_index;
     point.times_visible = point.times_found = 1;

@@ -38,29 +38,70 @@ void ResolveConflicts(const std::vector<int>& distances, int num_train, std::vec
   }
 }
 
+// Features bucketed by their ideal pixel position, so a radius search visits few of them.
+class FeatureGrid {
+ public:
+  explicit FeatureGrid(const FrameFeatures& frame) {
+    double max_u = 1.0, max_v = 1.0;
+    for (const Feature& f : frame.features) {
+      max_u = std::max(max_u, f.uv_ideal.x());
+      max_v = std::max(max_v, f.uv_ideal.y());
+    }
+    cols_ = static_cast<int>(max_u / kCellPx) + 1;
+    rows_ = static_cast<int>(max_v / kCellPx) + 1;
+    cells_.resize(static_cast<size_t>(cols_) * rows_);
+    for (size_t i = 0; i < frame.features.size(); ++i) {
+      const Eigen::Vector2d& uv = frame.features[i].uv_ideal;
+      cells_[Cell(Clamp(uv.x() / kCellPx, cols_), Clamp(uv.y() / kCellPx, rows_))].push_back(
+          static_cast<int>(i));
+    }
+  }
+
+  // Calls f(index) for every feature in the cells overlapping the square around uv.
+  template <typename F>
+  void ForEachNear(const Eigen::Vector2d& uv, double radius, F&& f) const {
+    const int c0 = Clamp((uv.x() - radius) / kCellPx, cols_);
+    const int c1 = Clamp((uv.x() + radius) / kCellPx, cols_);
+    const int r0 = Clamp((uv.y() - radius) / kCellPx, rows_);
+    const int r1 = Clamp((uv.y() + radius) / kCellPx, rows_);
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) {
+        for (int i : cells_[Cell(c, r)]) f(i);
+      }
+    }
+  }
+
+ private:
+  static constexpr double kCellPx = 16.0;
+  static int Clamp(double x, int n) { return std::clamp(static_cast<int>(x), 0, n - 1); }
+  size_t Cell(int c, int r) const { return static_cast<size_t>(r) * cols_ + c; }
+  int cols_ = 1, rows_ = 1;
+  std::vector<std::vector<int>> cells_;
+};
+
 // Best feature index for one projected point, or -1; writes its distance.
-int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame,
+int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const FeatureGrid& grid,
                   const ProjectionSearchOptions& options, int* best_distance) {
   const bool octave_known =
       p.predicted_octave >= 0 && p.predicted_octave < static_cast<int>(frame.octave_scale.size());
   const double radius =
       options.radius_px * (octave_known ? frame.octave_scale[p.predicted_octave] : 1.0);
   int best = std::numeric_limits<int>::max(), second = best, best_index = -1;
-  for (size_t i = 0; i < frame.features.size(); ++i) {
+  grid.ForEachNear(p.uv_ideal, radius, [&](int i) {
     const Feature& f = frame.features[i];
     if (octave_known && std::abs(f.octave - p.predicted_octave) > options.octave_tolerance) {
-      continue;
+      return;
     }
-    if ((f.uv_ideal - p.uv_ideal).squaredNorm() > radius * radius) continue;
+    if ((f.uv_ideal - p.uv_ideal).squaredNorm() > radius * radius) return;
     const int d = Hamming(p.descriptor.ptr<uchar>(0), frame.descriptors.ptr<uchar>(i));
     if (d < best) {
       second = best;
       best = d;
-      best_index = static_cast<int>(i);
+      best_index = i;
     } else if (d < second) {
       second = d;
     }
-  }
+  });
   *best_distance = best;
   if (best_index < 0 || best >= options.max_distance) return -1;
   if (second != std::numeric_limits<int>::max() && best >= options.ratio * second) return -1;
@@ -82,11 +123,12 @@ std::vector<int> SearchByProjection(const std::vector<ProjectedPoint>& points,
                                     const ProjectionSearchOptions& options) {
   std::vector<int> match(points.size(), -1);
   std::vector<int> distances(points.size(), 0);
+  const FeatureGrid grid(frame);
   for (size_t k = 0; k < points.size(); ++k) {
     if (points[k].descriptor.total() != kDescriptorBytes) {
       throw std::invalid_argument("SearchByProjection: descriptor must have 32 bytes");
     }
-    match[k] = BestCandidate(points[k], frame, options, &distances[k]);
+    match[k] = BestCandidate(points[k], frame, grid, options, &distances[k]);
   }
   ResolveConflicts(distances, static_cast<int>(frame.features.size()), &match);
   return match;

@@ -29,12 +29,25 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
   current->matches.insert(current->matches.end(), more.begin(), more.end());
 }
 
+PoseResult Odometry::SolvePoseFromStaticPoints(const Current& current,
+                                               const Eigen::Isometry3d& T_camera_world) const {
+  const PinholeCamera& camera = *current.frame->camera;
+  PoseResult verified = EstimatePoseFromMatches(map_, current.matches, current.features, camera,
+                                                T_camera_world, PointSelection::kVerified,
+                                                current.excluded, config_);
+  if (verified.success && verified.num_inliers >= config_.tracking.min_static_inliers) {
+    return verified;
+  }
+  // Too few verified points (new scene parts): candidates help until they are verified.
+  return EstimatePoseFromMatches(map_, current.matches, current.features, camera, T_camera_world,
+                                 PointSelection::kMarked, current.excluded, config_);
+}
+
 bool Odometry::EstimateInitialPose(Current* current, FrameResult* result) {
   const PinholeCamera& camera = *current->frame->camera;
   const int min_inliers = config_.tracking.min_static_inliers;
   const Eigen::Isometry3d T_predicted = motion_.Predict(current->frame->stamp_s).inverse();
-  current->pose = EstimatePoseFromMatches(map_, current->matches, current->features, camera,
-                                          T_predicted, true, {}, config_);
+  current->pose = SolvePoseFromStaticPoints(*current, T_predicted);
   if (current->pose.success && current->pose.num_inliers >= min_inliers) {
     current->T_camera_world = current->pose.T_camera_world;
     return true;
@@ -77,8 +90,9 @@ void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
       DetermineStaticPointsFrontEnd(map_, current->matches, current->features,
                                     current->T_camera_world, FrontEndReferenceFrames(),
                                     config_.static_points);
-  current->excluded = ApplyStaticLabels(current->static_points, current->matches,
-                                        config_.tracking.isolated_frames_to_unmark, &map_);
+  current->excluded = ApplyStaticLabels(
+      current->static_points, current->matches, config_.tracking.isolated_frames_to_unmark,
+      result->frame_index, config_.tracking.verify_frames, &map_);
   const StaticPointsStats& stats = current->static_points.result.stats;
   result->counts.graph_points = stats.points;
   result->counts.graph_edges = stats.edges;
@@ -99,9 +113,7 @@ bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result)
   current->matches.insert(current->matches.end(), more.begin(), more.end());
 
   current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged
-  PoseResult refined = EstimatePoseFromMatches(map_, current->matches, current->features, camera,
-                                               current->T_camera_world, true, current->excluded,
-                                               config_);
+  PoseResult refined = SolvePoseFromStaticPoints(*current, current->T_camera_world);
   const int min_inliers = config_.tracking.min_static_inliers;
   if (refined.success && refined.num_inliers >= min_inliers) {
     current->pose = std::move(refined);
@@ -158,7 +170,8 @@ int Odometry::MakeKeyFrame(const Current& current) {
                                  cfg.dynamic_neighbour_radius_px)
           : std::vector<bool>(current.features.features.size(), false);
   CreationContext context{current.T_camera_world.inverse(), frame_index,
-                          map_.keyframes().empty() ? 0 : map_.keyframes().back().id + 1};
+                          map_.keyframes().empty() ? 0 : map_.keyframes().back().id + 1,
+                          config_.static_points.enabled && cfg.verify_frames > 0};
   const std::vector<PointId> created = CreateMapPoints(current.features, current.feature_taken,
                                                        dynamic, context, cfg, &map_);
   KeyFrame keyframe;

@@ -13,12 +13,14 @@ struct Observations {
 
 Observations BuildObservations(const Map& map, const std::vector<PointMatch>& matches,
                                const FrameFeatures& features, const Eigen::Matrix3d& R_camera_world,
-                               bool marked_only, const std::vector<bool>& excluded,
+                               PointSelection selection, const std::vector<bool>& excluded,
                                double pixel_sigma_px) {
   Observations out;
   for (size_t m = 0; m < matches.size(); ++m) {
     const MapPoint* point = map.Find(matches[m].id);
-    if (point == nullptr || (marked_only && !point->marked)) continue;
+    if (point == nullptr) continue;
+    if (selection != PointSelection::kAll && !point->marked) continue;
+    if (selection == PointSelection::kVerified && point->candidate) continue;
     if (!excluded.empty() && excluded[m]) continue;
     const Feature& feature = features.features[matches[m].feature];
     if (feature.measurement) {
@@ -49,10 +51,11 @@ PoseResult ToMatches(PoseResult result, const Observations& obs, size_t num_matc
 
 PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
                                    const FrameFeatures& features, const PinholeCamera& camera,
-                                   const Eigen::Isometry3d& T_camera_world_init, bool marked_only,
-                                   const std::vector<bool>& excluded, const Config& config) {
+                                   const Eigen::Isometry3d& T_camera_world_init,
+                                   PointSelection selection, const std::vector<bool>& excluded,
+                                   const Config& config) {
   const Observations obs =
-      BuildObservations(map, matches, features, T_camera_world_init.rotation(), marked_only,
+      BuildObservations(map, matches, features, T_camera_world_init.rotation(), selection,
                         excluded, config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePose(obs.observations, T_camera_world_init, camera, config.pose), obs,
                    matches.size());
@@ -64,7 +67,8 @@ PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<Point
                                          uint32_t seed) {
   // The map covariance is rotated with an unknown pose here: leave it to RANSAC's extra sigma.
   const Observations obs = BuildObservations(map, matches, features, Eigen::Matrix3d::Zero(),
-                                             false, {}, config.depth_noise.pixel_sigma_px);
+                                             PointSelection::kAll, {},
+                                             config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePoseRobust(obs.observations, camera, config.pose, seed), obs,
                    matches.size());
 }

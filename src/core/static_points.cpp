@@ -43,6 +43,29 @@ void CountLabels(StaticPointsResult* result) {
 
 }  // namespace
 
+void RequireEvidenceAgainstStatic(const std::vector<GraphEdge>& edges,
+                                  const std::vector<bool>& edge_verified,
+                                  const std::vector<int>& component, int static_component,
+                                  std::vector<PointLabel>* labels) {
+  if (static_component < 0) return;
+  const int num_components =
+      component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
+  std::vector<bool> evidence(num_components, false);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    if (!edge_verified[e]) continue;
+    const int ci = component[edges[e].i], cj = component[edges[e].j];
+    if (ci == static_component && cj != static_component) evidence[cj] = true;
+    if (cj == static_component && ci != static_component) evidence[ci] = true;
+  }
+  for (size_t i = 0; i < labels->size(); ++i) {
+    const PointLabel label = (*labels)[i];
+    if ((label == PointLabel::kDynamic || label == PointLabel::kIsolated) &&
+        !evidence[component[i]]) {
+      (*labels)[i] = PointLabel::kUnverified;
+    }
+  }
+}
+
 StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
                                          const StaticPointsConfig& config) {
   StaticPointsResult result;
@@ -79,6 +102,8 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
   StaticSelection selection =
       SelectStaticComponent(result.points_world, result.component, selection_options);
   result.labels = std::move(selection.labels);
+  RequireEvidenceAgainstStatic(result.edges, result.edge_verified, result.component,
+                               selection.static_component, &result.labels);
   for (int i = 0; i < num_points; ++i) {
     if (!has_verified_edge[i]) result.labels[i] = PointLabel::kUnverified;
   }

@@ -43,10 +43,12 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
 /// - isolated (every edge inconsistent): most often a false match rather than a moving point, so
 ///   the match is only excluded from this frame's pose; a point isolated in
 ///   `isolated_frames_to_unmark` consecutive frames is unmarked;
-/// - static -> its isolation count is cleared.
+/// - static -> marked, its isolation count cleared; a candidate (new point) becomes verified
+///   once it is static at least `verify_frames` after its creation (frame `frame_index` now).
 /// Returns, parallel to `matches`, whether each match must stay out of the pose.
 std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
                                     const std::vector<PointMatch>& matches,
-                                    int isolated_frames_to_unmark, Map* map);
+                                    int isolated_frames_to_unmark, int frame_index,
+                                    int verify_frames, Map* map);
 
 }  // namespace dslam

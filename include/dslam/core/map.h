@@ -25,7 +25,11 @@ struct MapPoint {
   cv::Mat descriptor;    ///< 1x32 CV_8U ORB descriptor of the observation that created it
   int octave = 0;        ///< pyramid level of that observation
   int created_feature = -1;  ///< index of that observation's feature in its frame
-  bool marked = true;    ///< trusted static: only marked points drive motion estimation
+  double reference_distance_m = 0.0;  ///< [m] camera distance of that observation
+  bool marked = true;    ///< not known to move: only marked points drive motion estimation
+  /// New and not yet verified static over a long enough baseline: matched (so it claims its
+  /// feature) but used for the pose only when verified points are too few.
+  bool candidate = false;
   int keyframe_id = -1;  ///< keyframe that created the point (its reference observation)
   int created_frame = 0;    ///< frame index of creation
   int last_seen_frame = 0;  ///< last frame index where it was matched

@@ -20,6 +20,7 @@ struct CreationContext {
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< keyframe pose
   int frame_index = 0;   ///< frame the keyframe was made from
   int keyframe_id = -1;  ///< id the keyframe will get
+  bool new_points_are_candidates = false;  ///< new points wait for verification (see MapPoint)
 };
 
 /// Whether each feature's tracked image neighbours (matched map points within `radius_px`) are

@@ -49,6 +49,8 @@ class Odometry {
   bool BeginFrame(const RgbdFrame& frame, FrameResult* result);
   FrameResult Initialise(Current* current, FrameResult result);
   void MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world, bool wide);
+  PoseResult SolvePoseFromStaticPoints(const Current& current,
+                                       const Eigen::Isometry3d& T_camera_world) const;
   bool EstimateInitialPose(Current* current, FrameResult* result);
   std::vector<const FrameMeasurements*> FrontEndReferenceFrames() const;
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);

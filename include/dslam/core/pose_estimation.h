@@ -15,16 +15,24 @@
 
 namespace dslam {
 
+/// Which matched map points a pose estimate uses.
+enum class PointSelection {
+  kVerified,            ///< marked and verified (no candidates)
+  kMarked,              ///< marked, candidates included
+  kAll,                 ///< every match
+};
+
 /// Motion-only BA (Huber, chi-square inlier rounds) from `T_camera_world_init` over the matches
-/// whose map point is marked (all matches when `marked_only` is false). Matches with a depth
+/// whose map point is `selection`. Matches with a depth
 /// measurement give 3D residuals whitened by C_ik plus the map point's covariance, the others 2D
 /// reprojection residuals (1 px x octave scale). Matches flagged in `excluded` (parallel to
 /// `matches`, may be empty) are left out. The result's `inliers` is parallel to `matches`
 /// (matches left out: false).
 PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
                                    const FrameFeatures& features, const PinholeCamera& camera,
-                                   const Eigen::Isometry3d& T_camera_world_init, bool marked_only,
-                                   const std::vector<bool>& excluded, const Config& config);
+                                   const Eigen::Isometry3d& T_camera_world_init,
+                                   PointSelection selection, const std::vector<bool>& excluded,
+                                   const Config& config);
 
 /// RANSAC over the 3D-3D correspondences of all matches (marked or not), refined by motion-only
 /// BA; `inliers` parallel to `matches`. Deterministic for a given `seed`.

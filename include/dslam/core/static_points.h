@@ -44,6 +44,16 @@ struct StaticPointsResult {
   StaticPointsStats stats;                    ///< timings and counts
 };
 
+/// A component other than the static one is only evidence of motion when a tested edge joins it
+/// to the static component (and was culled: otherwise they would be one component). Components
+/// cut off merely because their edges were untested carry no evidence: their kDynamic/kIsolated
+/// labels become kUnverified. Without this, a static region the graph happens to cut off is
+/// labelled dynamic.
+void RequireEvidenceAgainstStatic(const std::vector<GraphEdge>& edges,
+                                  const std::vector<bool>& edge_verified,
+                                  const std::vector<int>& component, int static_component,
+                                  std::vector<PointLabel>* labels);
+
 /// Runs the three steps on `input` (points, fixed camera poses, observations). The graph is
 /// built over input.points_world; volumes use the optimised points. Throws
 /// std::invalid_argument on inconsistent indices.

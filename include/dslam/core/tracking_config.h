@@ -29,6 +29,10 @@ struct TrackingConfig {
   double dynamic_neighbour_radius_px = 40.0;  ///< [px] neighbourhood for new-point labels
   double cull_min_found_ratio = 0.25;  ///< [-] found/visible below this after cull_min_visible
   int cull_min_visible = 8;          ///< [-] sightings before the found ratio is checked
+  /// [frames] a new map point is a candidate (not used for the pose while enough verified
+  /// points exist) until the front end finds it static at least this long after its creation.
+  /// 0: new points are trusted at once (the paper: new points start marked).
+  int verify_frames = 6;
   int isolated_frames_to_unmark = 3;  ///< [frames] isolated this often in a row: unmarked
   int lost_frames_before_reset = 10;  ///< [frames] lost this long: re-initialise at last pose
 
@@ -76,6 +80,11 @@ struct TrackingConfig {
       s.cull_min_found_ratio);
     v(FieldInfo{"cull_min_visible", "-", 1, 100000, "sightings before the ratio is checked", {}},
       s.cull_min_visible);
+    v(FieldInfo{"verify_frames", "frames", 0, 1000,
+                "new points are used for the pose once found static this long after creation "
+                "(0: at once, as the paper)",
+                {}},
+      s.verify_frames);
     v(FieldInfo{"isolated_frames_to_unmark", "frames", 1, 1000,
                 "a point whose graph edges are all inconsistent this many frames in a row is "
                 "unmarked (once: probably a false match, only left out of that frame's pose)",
