@@ -212,11 +212,13 @@ void Odometry::Summarise(const Current& current, FrameResult* result) const {
     const MapPoint* point = map_.Find(match.id);
     if (point == nullptr) continue;
     (point->marked ? counts.static_points : counts.dynamic_points)++;
+    if (point->marked && point->candidate) ++counts.candidate_points;
     ObservedPoint observed;
     observed.id = match.id;
     observed.uv_raw = current.features.features[match.feature].uv_raw;
     observed.p_world = point->p_world;
     observed.is_static = point->marked;
+    observed.is_candidate = point->marked && point->candidate;
     result->points.push_back(observed);
   }
   const StaticPointsResult& spd = current.static_points.result;

@@ -17,7 +17,7 @@ const char* ToString(TrackingState state) {
 }
 
 std::string StatusCsvHeader() {
-  return "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
+  return "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
          "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms";
 }
@@ -27,9 +27,10 @@ std::string StatusCsvRow(const FrameResult& r) {
   const StageTimes& t = r.times;
   char buffer[512];
   std::snprintf(buffer, sizeof(buffer),
-                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f",
+                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f",
                 r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
                 c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
+                c.candidate_points,
                 c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges, c.map_points,
                 c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
                 t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms);

@@ -28,6 +28,8 @@ void SegmentationScore::Add(const std::vector<ObservedPoint>& points, const cv::
     const int truth = MaskClass(mask, point.uv_raw, margin_);
     if (truth < 0) {
       ++skipped_;
+    } else if (point.is_candidate) {
+      (truth == 1 ? cand_dyn_ : cand_static_)++;
     } else if (truth == 1) {
       (point.is_static ? fn_ : tp_)++;
     } else {

@@ -1,6 +1,8 @@
 // dslam_run_dataset: runs the odometry on a TUM-layout folder and writes the trajectory (every
 // tracked frame, TUM format, camera optical frame), a per-frame status CSV and a summary. On
 // synthetic folders (mask.txt present) it also scores the static/dynamic labels.
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -67,7 +69,15 @@ std::map<double, std::string> ReadMasks(const std::string& folder) {
   return masks;
 }
 
+// A bar redrawn in place on a terminal; one line per 10% otherwise (logs stay readable).
 void Progress(size_t done, size_t total, const dslam::FrameResult& r) {
+  static const bool terminal = isatty(fileno(stderr));
+  if (!terminal) {
+    if (done * 10 / total != (done - 1) * 10 / total || done == total) {
+      std::fprintf(stderr, "%3zu%% %zu/%zu frames\n", done * 100 / total, done, total);
+    }
+    return;
+  }
   const int width = 30;
   const int filled = static_cast<int>(width * done / total);
   std::fprintf(stderr, "\r[%s%s] %zu/%zu %-11s %5.1f ms", std::string(filled, '#').c_str(),
@@ -96,7 +106,9 @@ void WriteSummaryJson(const std::string& path, const dslam::RunSummary& summary,
         << ",\n  \"true_dynamic\": " << score.true_dynamic()
         << ",\n  \"false_dynamic\": " << score.false_dynamic()
         << ",\n  \"missed_dynamic\": " << score.missed_dynamic()
-        << ",\n  \"true_static\": " << score.true_static();
+        << ",\n  \"true_static\": " << score.true_static()
+        << ",\n  \"candidates_on_dynamic\": " << score.candidates_on_dynamic()
+        << ",\n  \"candidates_on_static\": " << score.candidates_on_static();
   }
   out << "\n}\n";
 }
@@ -129,14 +141,15 @@ int Run(const Args& args) {
     }
     if (!args.quiet) Progress(i + 1, n, r);
   }
-  if (!args.quiet) std::fprintf(stderr, "\n");
+  if (!args.quiet && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
   dslam::WriteTumTrajectory(args.trajectory, trajectory);
   summary.PrintStages(std::cout);
   if (!masks.empty()) {
     std::printf("segmentation: dynamic precision %.3f recall %.3f, static wrongly dynamic %.4f "
-                "(tp %ld fp %ld fn %ld tn %ld)\n",
+                "(tp %ld fp %ld fn %ld tn %ld; not yet judged: %ld on objects, %ld static)\n",
                 score.Precision(), score.Recall(), score.FalseDynamicRate(), score.true_dynamic(),
-                score.false_dynamic(), score.missed_dynamic(), score.true_static());
+                score.false_dynamic(), score.missed_dynamic(), score.true_static(),
+                score.candidates_on_dynamic(), score.candidates_on_static());
   }
   if (!args.summary.empty()) {
     WriteSummaryJson(args.summary, summary, score, !masks.empty(), args.static_points);

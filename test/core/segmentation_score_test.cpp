@@ -22,6 +22,11 @@ TEST(SegmentationScore, CountsConfusionAndSkipsMaskEdges) {
              At(19, 10, false), At(21, 10, true),   // within 2 px of the edge: skipped
              At(0, 0, true)},                       // image border: skipped
             mask);
+  ObservedPoint candidate = At(30, 30, true);
+  candidate.is_candidate = true;
+  score.Add({candidate}, mask);
+  EXPECT_EQ(score.candidates_on_dynamic(), 1);
+  EXPECT_EQ(score.candidates_on_static(), 0);
   EXPECT_EQ(score.true_static(), 1);
   EXPECT_EQ(score.false_dynamic(), 1);
   EXPECT_EQ(score.true_dynamic(), 2);

@@ -29,7 +29,8 @@ struct ObservedPoint {
   PointId id = -1;
   Eigen::Vector2d uv_raw = Eigen::Vector2d::Zero();  ///< [px] keypoint in the raw colour image
   Eigen::Vector3d p_world = Eigen::Vector3d::Zero();  ///< [m] map point position, world frame
-  bool is_static = true;  ///< marked (trusted static) at the end of the frame
+  bool is_static = true;     ///< marked (not known to move) at the end of the frame
+  bool is_candidate = false;  ///< marked but not yet verified: not used for the pose
 };
 
 /// An edge of the front-end Delaunay graph, for visualisation.
@@ -45,6 +46,7 @@ struct FrameCounts {
   int tracked = 0;          ///< map points matched in the frame
   int static_points = 0;    ///< matched and marked at the end of the frame
   int dynamic_points = 0;   ///< matched and unmarked at the end of the frame
+  int candidate_points = 0;  ///< of the static points: candidates not yet verified
   int pose_inliers = 0;     ///< inliers of the final pose estimate
   int graph_points = 0;     ///< points in the front-end graph
   int graph_edges = 0;      ///< edges in the front-end graph
