@@ -20,3 +20,9 @@ if(CATKIN_ENABLE_TESTING)
     ${CMAKE_CURRENT_SOURCE_DIR}/test/core/segmentation_score_test.cpp)
   target_link_libraries(test_odometry dslam_core gtest_main)
 endif()
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(test_odometry_regression
+    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/odometry_regression_test.cpp)
+  target_link_libraries(test_odometry_regression dslam_core gtest_main)
+endif()
