@@ -161,8 +161,27 @@ bool Odometry::NeedKeyFrame(const Current& current, int static_matches) const {
          static_matches < cfg.keyframe_min_tracked_ratio * last_keyframe_static_;
 }
 
+void Odometry::FuseStaticPoints(const Current& current) {
+  const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
+  const Eigen::Matrix3d R = T_world_camera.rotation();
+  for (size_t m = 0; m < current.matches.size(); ++m) {
+    MapPoint* point = map_.Find(current.matches[m].id);
+    const auto& measurement = current.features.features[current.matches[m].feature].measurement;
+    if (point == nullptr || !measurement || !point->marked || point->candidate) continue;
+    if (!current.pose.inliers[m] || (!current.excluded.empty() && current.excluded[m])) continue;
+    // Information-weighted mean of the map position and this keyframe's measurement.
+    const Eigen::Matrix3d info_map = point->cov_world.inverse();
+    const Eigen::Matrix3d info_obs = (R * measurement->covariance * R.transpose()).inverse();
+    const Eigen::Matrix3d cov = (info_map + info_obs).inverse();
+    point->p_world =
+        cov * (info_map * point->p_world + info_obs * (T_world_camera * measurement->y_camera));
+    point->cov_world = cov;
+  }
+}
+
 int Odometry::MakeKeyFrame(const Current& current) {
   const TrackingConfig& cfg = config_.tracking;
+  if (cfg.fuse_static_points) FuseStaticPoints(current);
   const int frame_index = frame_index_ - 1;
   const std::vector<bool> dynamic =
       config_.static_points.enabled

@@ -58,6 +58,7 @@ class Odometry {
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(const Current& current, int static_matches) const;
   int MakeKeyFrame(const Current& current);
+  void FuseStaticPoints(const Current& current);
   FrameMeasurements MeasurementsOf(const Current& current,
                                    const std::vector<PointId>& created) const;
   FrameResult Lost(Current* current, FrameResult result, const char* why);
