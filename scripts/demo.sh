@@ -38,8 +38,8 @@ rosrun dslam plot_trajectory --groundtruth "$OUT/$SCENARIO/groundtruth.txt" \
 
 cat <<EOT
 [demo] done. Outputs in $OUT:
-  $SCENARIO/            synthetic TUM-layout folder (rgb/, depth/, mask/, groundtruth.txt)
-  $SCENARIO.bag         the same frames as a rosbag (TUM topics)
+  $SCENARIO/  synthetic TUM-layout folder (rgb/, depth/, mask/, groundtruth.txt)
+  $SCENARIO.bag  the same frames as a rosbag (TUM topics)
   preview.png           a frame of the scenario with its dynamic mask
   trajectory.txt        every tracked pose from the ROS node (TUM format, camera optical frame)
   node.json             frames received / processed / dropped, latency, per-frame time
