@@ -1,0 +1,62 @@
+#pragma once
+// Publishes the odometry's per-frame outputs: nav_msgs/Odometry `odom`, nav_msgs/Path `path`,
+// TF odom -> base, dslam/FrameStatus `status`, and - only when subscribed - the PointClouds
+// `static_points` / `dynamic_points`, MarkerArray `graph_edges` and Image `features`.
+
+#include <cstdint>
+
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <std_msgs/Header.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <Eigen/Geometry>
+
+#include "dslam/core/frame_result.h"
+#include "dslam/core/rgbd_frame.h"
+#include "dslam/ros/node_config.h"
+
+namespace dslam {
+namespace ros_layer {
+
+/// Counters since the nodelet started, reported in the status message.
+struct FrameCounters {
+  uint64_t received = 0;   ///< synchronized image sets received
+  uint64_t processed = 0;  ///< frames run through the odometry
+  uint64_t dropped = 0;    ///< replaced in the queue before processing
+  uint64_t rejected = 0;   ///< bad input (encoding, size, camera)
+};
+
+/// Owns the output publishers of the odometry nodelet. Call from one thread.
+class FramePublisher {
+ public:
+  /// Advertises the outputs on `nh` (the nodelet's node handle, relative names).
+  FramePublisher(ros::NodeHandle& nh, const NodeConfig& config);
+
+  /// Publishes everything for one processed frame. `header` carries the image stamp and the
+  /// camera's optical frame id; T_base_camera is the camera mount [m]; latency_ms is the wall
+  /// time from receiving the images.
+  void Publish(const FrameResult& result, const RgbdFrame& frame, const std_msgs::Header& header,
+               const Eigen::Isometry3d& T_base_camera, const FrameCounters& counters,
+               double latency_ms);
+
+  /// Empties the published path (after a reset).
+  void ClearPath() { path_.poses.clear(); }
+
+ private:
+  void PublishPose(const FrameResult& result, const std_msgs::Header& odom_header,
+                   const Eigen::Isometry3d& T_base_camera);
+  void PublishStatus(const FrameResult& result, const std_msgs::Header& odom_header,
+                     const FrameCounters& counters, double latency_ms);
+  void PublishVisuals(const FrameResult& result, const RgbdFrame& frame,
+                      const std_msgs::Header& header, const std_msgs::Header& odom_header,
+                      const Eigen::Isometry3d& T_base_camera);
+
+  NodeConfig config_;
+  ros::Publisher odom_pub_, path_pub_, status_pub_;
+  ros::Publisher static_pub_, dynamic_pub_, edges_pub_, features_pub_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  nav_msgs::Path path_;
+};
+
+}  // namespace ros_layer
+}  // namespace dslam

@@ -1,0 +1,132 @@
+#include "dslam/ros/frame_publisher.h"
+
+#include <cv_bridge/cv_bridge.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <tf2_eigen/tf2_eigen.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "dslam/FrameStatus.h"
+#include "dslam/ros/conversions.h"
+#include "dslam/ros/visualisation.h"
+
+namespace dslam {
+namespace ros_layer {
+
+FramePublisher::FramePublisher(ros::NodeHandle& nh, const NodeConfig& config) : config_(config) {
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+  path_pub_ = nh.advertise<nav_msgs::Path>("path", 1);
+  status_pub_ = nh.advertise<dslam::FrameStatus>("status", 10);
+  static_pub_ = nh.advertise<sensor_msgs::PointCloud2>("static_points", 1);
+  dynamic_pub_ = nh.advertise<sensor_msgs::PointCloud2>("dynamic_points", 1);
+  edges_pub_ = nh.advertise<visualization_msgs::MarkerArray>("graph_edges", 1);
+  features_pub_ = nh.advertise<sensor_msgs::Image>("features", 1);
+}
+
+void FramePublisher::Publish(const FrameResult& result, const RgbdFrame& frame,
+                             const std_msgs::Header& header, const Eigen::Isometry3d& T_base_camera,
+                             const FrameCounters& counters, double latency_ms) {
+  std_msgs::Header odom_header = header;
+  odom_header.frame_id = config_.odom_frame;
+  if (result.reset) ClearPath();
+  if (result.has_pose) PublishPose(result, odom_header, T_base_camera);
+  PublishVisuals(result, frame, header, odom_header, T_base_camera);
+  PublishStatus(result, odom_header, counters, latency_ms);
+}
+
+void FramePublisher::PublishPose(const FrameResult& result, const std_msgs::Header& odom_header,
+                                 const Eigen::Isometry3d& T_base_camera) {
+  const Eigen::Isometry3d T_odom_base = OdomFromBase(result.T_world_camera, T_base_camera);
+  const geometry_msgs::Pose pose = tf2::toMsg(T_odom_base);
+  if (config_.publish_tf) {
+    geometry_msgs::TransformStamped tf = tf2::eigenToTransform(T_odom_base);
+    tf.header = odom_header;
+    tf.child_frame_id = config_.base_frame;
+    tf_broadcaster_.sendTransform(tf);
+  }
+  nav_msgs::Odometry odom;
+  odom.header = odom_header;
+  odom.child_frame_id = config_.base_frame;
+  odom.pose.pose = pose;
+  const Eigen::Matrix<double, 6, 6> covariance =
+      OdomCovariance(result.information, result.T_world_camera, T_base_camera);
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 6; ++c) odom.pose.covariance[6 * r + c] = covariance(r, c);
+  }
+  odom_pub_.publish(odom);
+
+  geometry_msgs::PoseStamped stamped;
+  stamped.header = odom_header;
+  stamped.pose = pose;
+  path_.poses.push_back(stamped);
+  const size_t max_poses = static_cast<size_t>(config_.path_max_poses);
+  if (path_.poses.size() > max_poses) {
+    path_.poses.erase(path_.poses.begin(), path_.poses.end() - max_poses);
+  }
+  if (path_pub_.getNumSubscribers() > 0) {
+    path_.header = odom_header;
+    path_pub_.publish(path_);
+  }
+}
+
+void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header& odom_header,
+                                   const FrameCounters& counters, double latency_ms) {
+  dslam::FrameStatus s;
+  s.header = odom_header;
+  s.state = ToString(r.state);
+  s.has_pose = r.has_pose;
+  s.keyframe = r.keyframe;
+  s.reset = r.reset;
+  s.message = r.message;
+  const FrameCounts& c = r.counts;
+  s.features = c.features;
+  s.features_with_depth = c.features_with_depth;
+  s.tracked = c.tracked;
+  s.static_points = c.static_points;
+  s.dynamic_points = c.dynamic_points;
+  s.pose_inliers = c.pose_inliers;
+  s.graph_points = c.graph_points;
+  s.graph_edges = c.graph_edges;
+  s.culled_edges = c.culled_edges;
+  s.map_points = c.map_points;
+  s.new_points = c.new_points;
+  const StageTimes& t = r.times;
+  s.features_ms = t.features_ms;
+  s.matching_ms = t.matching_ms;
+  s.initial_pose_ms = t.initial_pose_ms;
+  s.static_points_ms = t.static_points_ms;
+  s.refine_ms = t.refine_ms;
+  s.mapping_ms = t.mapping_ms;
+  s.total_ms = t.total_ms;
+  s.latency_ms = latency_ms;
+  s.frames_received = counters.received;
+  s.frames_processed = counters.processed;
+  s.frames_dropped = counters.dropped;
+  s.frames_rejected = counters.rejected;
+  status_pub_.publish(s);
+}
+
+void FramePublisher::PublishVisuals(const FrameResult& result, const RgbdFrame& frame,
+                                    const std_msgs::Header& header,
+                                    const std_msgs::Header& odom_header,
+                                    const Eigen::Isometry3d& T_base_camera) {
+  // The odometry world is the first frame's optical frame; odom = base at that frame.
+  if (static_pub_.getNumSubscribers() > 0) {
+    static_pub_.publish(MakeLabelledCloud(result.points, true, T_base_camera, odom_header));
+  }
+  if (dynamic_pub_.getNumSubscribers() > 0) {
+    dynamic_pub_.publish(MakeLabelledCloud(result.points, false, T_base_camera, odom_header));
+  }
+  if (edges_pub_.getNumSubscribers() > 0) {
+    edges_pub_.publish(MakeEdgeMarkers(result.edges, T_base_camera, odom_header));
+  }
+  if (features_pub_.getNumSubscribers() > 0) {
+    const cv_bridge::CvImage image(header, "bgr8", DrawFeatures(frame.colour, result.points));
+    features_pub_.publish(image.toImageMsg());
+  }
+}
+
+}  // namespace ros_layer
+}  // namespace dslam

@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""rostest: plays a freshly generated synthetic bag into the dslam nodelet and checks that
+odometry, TF, both clouds, graph markers and status arrive, and that the saved trajectory matches
+the ground truth within a tolerance after SE(3) alignment."""
+
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+import unittest
+
+import rospkg
+import rospy
+import rostest
+from nav_msgs.msg import Odometry
+from sensor_msgs.msg import PointCloud2
+from tf2_msgs.msg import TFMessage
+from visualization_msgs.msg import MarkerArray
+
+from dslam.msg import FrameStatus
+from dslam.srv import SaveTrajectory
+
+sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
+from dslam_tools import trajectory as traj  # noqa: E402
+
+FRAMES = 60
+ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
+
+
+class Recorder:
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.counts = {}
+        self.last = {}
+
+    def callback(self, name):
+        def store(msg):
+            with self.lock:
+                self.counts[name] = self.counts.get(name, 0) + 1
+                self.last[name] = msg
+        return store
+
+
+class OdometryBagTest(unittest.TestCase):
+    def test_outputs_and_trajectory(self):
+        rospy.init_node("odometry_bag_check")
+        work = tempfile.mkdtemp(prefix="dslam_rostest_")
+        folder, bag = os.path.join(work, "static_room"), os.path.join(work, "static_room.bag")
+        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "static_room",
+                               "--frames", str(FRAMES), "--seed", "1", "--output", folder,
+                               "--bag", bag], stdout=subprocess.DEVNULL)
+        rec = Recorder()
+        topics = [("odom", Odometry), ("static_points", PointCloud2),
+                  ("dynamic_points", PointCloud2), ("graph_edges", MarkerArray),
+                  ("status", FrameStatus)]
+        subs = [rospy.Subscriber("/dslam/" + t, c, rec.callback(t), queue_size=100)
+                for t, c in topics]
+        subs.append(rospy.Subscriber("/tf", TFMessage, rec.callback("tf"), queue_size=100))
+        rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
+        subprocess.check_call(["rosbag", "play", "--quiet", "-r", "0.5",
+                               "--wait-for-subscribers", bag, "--topics",
+                               "/camera/rgb/image_color", "/camera/depth/image",
+                               "/camera/rgb/camera_info"])
+        rospy.sleep(2.0)
+        for name in ["odom", "static_points", "dynamic_points", "graph_edges", "status", "tf"]:
+            self.assertGreater(rec.counts.get(name, 0), 0, "nothing received on " + name)
+        status = rec.last["status"]
+        self.assertEqual(status.frames_received, FRAMES)
+        self.assertEqual(status.frames_processed + status.frames_dropped, FRAMES)
+        odom = rec.last["odom"]
+        self.assertEqual(odom.header.frame_id, "odom")
+        self.assertEqual(odom.child_frame_id, "base_link")
+        self.assertGreater(odom.pose.covariance[0], 0.0)
+        out = os.path.join(work, "trajectory.txt")
+        result = rospy.ServiceProxy("/dslam/save_trajectory", SaveTrajectory)(out)
+        self.assertTrue(result.success, result.message)
+        self.assertGreater(result.poses, FRAMES // 2)
+        gt_stamps, gt_poses = traj.read_tum_trajectory(os.path.join(folder, "groundtruth.txt"))
+        est_stamps, est_poses = traj.read_tum_trajectory(out)
+        ate = traj.align_and_ate(gt_stamps, gt_poses, est_stamps, est_poses)
+        ate_m = ate["ate_rmse"]
+        rospy.loginfo("odometry_bag_check: %d poses, ATE %.4f m", result.poses, ate_m)
+        self.assertLess(ate_m, ATE_TOLERANCE_M)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dslam", "odometry_bag", OdometryBagTest)
