@@ -3,6 +3,7 @@ target_sources(dslam_core PRIVATE
   ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_actors.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_camera_motion.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_geometry.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_pattern.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_render.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_room.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/src/core/synth_scenario.cpp
@@ -19,6 +20,7 @@ list(APPEND DSLAM_TOOLS dslam_synth)
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(test_synth
     ${CMAKE_CURRENT_SOURCE_DIR}/test/core/synth_render_test.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/synth_sequence_test.cpp)
+    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/synth_sequence_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/synth_texture_test.cpp)
   target_link_libraries(test_synth dslam_core gtest_main)
 endif()

@@ -3,39 +3,83 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dslam/core/synth_pattern.h"
+
 namespace dslam {
 namespace synth {
 namespace {
 
 float Smooth(float x) { return x * x * (3.0f - 2.0f * x); }
 
-/// Sharp-edged rectangles, one per cell of size `cell_m` with probability `probability`; returns
-/// true and the patch colour when `uv` lies inside a patch.
-bool Patch(uint32_t seed, const Eigen::Vector2d& uv, double cell_m, float probability,
-           Eigen::Vector3f* colour) {
-  const double gx = uv.x() / cell_m, gy = uv.y() / cell_m;
-  const int32_t ix = static_cast<int32_t>(std::floor(gx)),
-                iy = static_cast<int32_t>(std::floor(gy));
-  const uint32_t h = Hash3(seed, ix, iy);
-  if (HashToUnit(h) >= probability) return false;
-  const float fx = static_cast<float>(gx - ix), fy = static_cast<float>(gy - iy);
-  const uint32_t h2 = Hash3(seed ^ 0x9e3779b9u, ix, iy);
-  const float x0 = 0.05f + 0.35f * HashToUnit(h2), y0 = 0.05f + 0.35f * HashToUnit(h2 * 747796405u);
-  const float x1 = x0 + 0.25f + 0.3f * HashToUnit(h2 * 2891336453u);
-  const float y1 = y0 + 0.25f + 0.3f * HashToUnit(h2 * 1181783497u);
-  if (fx < x0 || fx > x1 || fy < y0 || fy > y1) return false;
-  *colour = HashColour(h2 * 277803737u);
+/// Parameters of the layered texture of one family (sizes [m]).
+struct Layers {
+  double region_m;       ///< irregular cells with their own colour and brightness
+  float region_hue;      ///< how far a cell's colour departs from the base colour, [0, 1]
+  double noise_m;        ///< coarsest noise period
+  float noise_contrast;  ///< brightness range of the noise, factor 1 -+ contrast / 2
+  double big_shape_m;    ///< cell size of the large shapes
+  float big_density;     ///< probability of a large shape per cell
+  double small_shape_m;  ///< cell size of the small shapes (drawn on top)
+  float small_density;
+};
+
+/// Layer parameters per family; `params` in [0, 1) varies them per material.
+Layers LayersOf(TextureStyle style, float params) {
+  const double k = 0.8 + 0.4 * params;
+  switch (style) {
+    case TextureStyle::kCheckers:  // tiles of random size and shade
+      return {0.2 * k, 0.3f, 0.4, 0.5f, 0.3 * k, 0.3f, 0.1 * k, 0.25f};
+    case TextureStyle::kStripes:  // stripes of random width and colour
+      return {0.1 * k, 0.6f, 0.5, 0.5f, 0.28 * k, 0.45f, 0.09 * k, 0.3f};
+    case TextureStyle::kNoise:
+      return {0.6 * k, 0.4f, 0.3, 1.1f, 0.3 * k, 0.4f, 0.1 * k, 0.3f};
+    case TextureStyle::kCloth:
+      return {0.06 * k, 0.25f, 0.2, 0.5f, 0.12 * k, 0.45f, 0.04 * k, 0.35f};
+    case TextureStyle::kSkin:
+      return {0.08 * k, 0.05f, 0.1, 0.5f, 0.1 * k, 0.2f, 0.035 * k, 0.35f};
+    default:  // kPatches
+      return {0.45 * k, 0.35f, 0.5, 0.6f, 0.25 * k, 0.4f, 0.08 * k, 0.25f};
+  }
+}
+
+/// Colour of the shapes layers at `uv`, if a shape covers it (small shapes over large ones).
+bool ShapeColour(TextureStyle style, uint32_t seed, const Layers& l, const Eigen::Vector2d& uv,
+                 const Eigen::Vector3f& base, Eigen::Vector3f* colour) {
+  uint32_t h = 0;
+  if (!RandomShape(seed + 11u, uv, l.small_shape_m, l.small_density, &h) &&
+      !RandomShape(seed + 13u, uv, l.big_shape_m, l.big_density, &h)) {
+    return false;
+  }
+  const float pick = HashToUnit(Hash3(h, 3, 5));
+  if (style == TextureStyle::kSkin || (style == TextureStyle::kCloth && pick < 0.5f)) {
+    // prints in the material's own hue, far from its grey level: people stay recognisable
+    const float grey = 0.114f * base[0] + 0.587f * base[1] + 0.299f * base[2];
+    *colour = WithLuminance(base, grey < 110.0f ? 170.0f + 60.0f * pick : 20.0f + 50.0f * pick);
+  } else {
+    *colour = ContrastColour(h);
+  }
   return true;
 }
 
-/// Multi-scale value noise in [0, 1] with periods `coarse`, coarse/4 and coarse/12 [m].
-float Fractal(uint32_t seed, const Eigen::Vector2d& uv, double coarse) {
-  return 0.5f * ValueNoise(seed, uv, coarse) + 0.3f * ValueNoise(seed + 1, uv, coarse / 4.0) +
-         0.2f * ValueNoise(seed + 2, uv, coarse / 12.0);
-}
-
-Eigen::Vector3f Shade(const Eigen::Vector3f& colour, float factor) {
-  return (colour * factor).cwiseMax(0.0f).cwiseMin(255.0f);
+/// The layered texture: irregular cells (stripes for kStripes) of random colour and brightness,
+/// modulated by multi-octave noise, under random shapes at two scales.
+Eigen::Vector3f Layered(TextureStyle style, uint32_t seed, const Eigen::Vector3f& base,
+                        const Eigen::Vector2d& uv) {
+  const float params = HashToUnit(Hash3(seed, 7, 11));
+  const Layers l = LayersOf(style, params);
+  Eigen::Vector3f colour;
+  if (ShapeColour(style, seed, l, uv, base, &colour)) {
+    const float detail = ValueNoise(seed + 3u, uv, l.noise_m / 4.0);
+    return (colour * (0.85f + 0.3f * detail)).cwiseMax(0.0f).cwiseMin(255.0f);
+  }
+  const Eigen::Vector2d stripe_uv(params > 0.5f ? uv.x() : uv.x() + uv.y(), 0.0);
+  const CellId cell =
+      JitteredCell(seed, style == TextureStyle::kStripes ? stripe_uv : uv, l.region_m);
+  const float brightness = 0.45f + 0.9f * HashToUnit(Hash3(cell.hash, 1, 2));
+  colour = ((1.0f - l.region_hue) * base + l.region_hue * HashColour(cell.hash)) * brightness;
+  const float noise = FractalNoise(seed, uv, l.noise_m, 3);
+  colour *= 1.0f - 0.5f * l.noise_contrast + l.noise_contrast * noise;
+  return colour.cwiseMax(0.0f).cwiseMin(255.0f);
 }
 
 }  // namespace
@@ -78,52 +122,7 @@ Eigen::Vector3f TextureColour(const Material& material, int face, const Eigen::V
     return TextureColour(face_material, face, uv);
   }
   const uint32_t seed = material.seed * 0x9e3779b1u + static_cast<uint32_t>(face) * 0x632be5abu;
-  const float params = HashToUnit(Hash3(seed, 7, 11));
-  Eigen::Vector3f patch;
-  switch (material.style) {
-    case TextureStyle::kPatches: {
-      if (Patch(seed, uv, 0.12 + 0.15 * params, 0.7f, &patch)) {
-        return Shade(patch, 0.8f + 0.4f * ValueNoise(seed + 5, uv, 0.05));
-      }
-      return Shade(material.base_bgr, 0.5f + 0.9f * Fractal(seed, uv, 0.6));
-    }
-    case TextureStyle::kCheckers: {
-      if (Patch(seed, uv, 0.35, 0.3f, &patch)) return patch;
-      const double cell = 0.06 + 0.12 * params;
-      const int parity =
-          static_cast<int>(std::floor(uv.x() / cell) + std::floor(uv.y() / cell)) & 1;
-      const float noise = Fractal(seed, uv, 0.5);
-      return Shade(material.base_bgr, parity ? 0.45f + 0.4f * noise : 1.1f + 0.4f * noise);
-    }
-    case TextureStyle::kStripes: {
-      if (Patch(seed, uv, 0.25, 0.45f, &patch)) return patch;
-      const double width = 0.04 + 0.08 * params;
-      const double coord = (params > 0.5f) ? uv.x() : uv.x() + uv.y();
-      const int parity = static_cast<int>(std::floor(coord / width)) & 1;
-      return Shade(parity ? material.base_bgr : HashColour(seed),
-                   0.6f + 0.7f * Fractal(seed, uv, 0.4));
-    }
-    case TextureStyle::kNoise: {
-      if (Patch(seed, uv, 0.2, 0.35f, &patch)) return patch;
-      const float n = Fractal(seed, uv, 0.25);
-      return Shade(material.base_bgr, 0.2f + 1.6f * n);
-    }
-    case TextureStyle::kCloth: {
-      if (Patch(seed, uv, 0.09, 0.35f, &patch)) return Shade(patch, 0.9f);
-      const double cell = 0.03 + 0.03 * params;
-      const int parity =
-          static_cast<int>(std::floor(uv.x() / cell) + std::floor(uv.y() / cell)) & 1;
-      return Shade(material.base_bgr,
-                   (parity ? 0.7f : 1.15f) * (0.7f + 0.6f * Fractal(seed, uv, 0.2)));
-    }
-    case TextureStyle::kRoom:
-      break;
-    case TextureStyle::kSkin: {
-      if (Patch(seed, uv, 0.05, 0.25f, &patch)) return Shade(material.base_bgr, 0.45f);
-      return Shade(material.base_bgr, 0.75f + 0.5f * Fractal(seed, uv, 0.1));
-    }
-  }
-  return material.base_bgr;
+  return Layered(material.style, seed, material.base_bgr, uv);
 }
 
 }  // namespace synth

@@ -1,9 +1,10 @@
 #pragma once
 // Procedural textures of the synthetic renderer: a colour as a function of a material and a point
 // on its surface. Textures are functions of surface coordinates only, so they move rigidly with
-// their object and keep their brightness from frame to frame. Every family mixes hashed value
-// noise at several scales with sharp-edged features (rectangular patches, checkers, stripes) so
-// that ORB finds corners at 0.5-5 m viewing distance (1 px ~ 1-10 mm at f = 525 px).
+// their object and keep their brightness from frame to frame. Every family layers irregular cells
+// of random colour and brightness, multi-octave value noise and random shapes at two scales
+// (synth_pattern.h), so that ORB finds distinctive corners everywhere at 0.5-5 m viewing distance
+// (1 px ~ 1-10 mm at f = 525 px) and no patch looks like another.
 
 #include <cstdint>
 
