@@ -97,7 +97,10 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   map_.Clear();
   TrackingConfig create = config_.tracking;
   create.max_new_points = with_depth;
-  CreationContext context{motion_.last_pose(), result.frame_index, 0};
+  // Even the first map's points wait for verification: a person in the first frame would
+  // otherwise be trusted static until the front end catches it.
+  CreationContext context{motion_.last_pose(), result.frame_index, 0,
+                          config_.static_points.enabled && config_.tracking.verify_frames > 0};
   const std::vector<bool> none(current->features.features.size(), false);
   const std::vector<PointId> ids =
       CreateMapPoints(current->features, none, none, context, create, &map_);
