@@ -62,13 +62,17 @@ def evaluate(folder, camera, static_points, out_dir, config):
     return result
 
 
+def fmt(value, digits=4):
+    return "n/a" if value is None else f"{value:.{digits}f}"
+
+
 def row(name, on, off):
     ratio = off["ate_rmse_m"] / max(on["ate_rmse_m"], 1e-9)
     seg = (f"{on['dynamic_precision']:.3f} | {on['dynamic_recall']:.3f} | "
            f"{on['false_dynamic_rate']:.4f}") if "dynamic_recall" in on else "- | - | -"
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
     return (f"| {name} | {on['ate_rmse_m']:.4f} | {off['ate_rmse_m']:.4f} | {ratio:.1f}x | "
-            f"{on['rpe_trans_rmse_m_per_s']:.4f} | {tracked:.3f} | {on['coverage']:.3f} | {seg} | "
+            f"{fmt(on.get('rpe_trans_rmse_m_per_s'))} | {tracked:.3f} | {fmt(on['coverage'], 3)} | {seg} | "
             f"{on['median_total_ms']:.1f} | {on['median_static_points_ms']:.2f} "
             f"({on['median_graph_points']:.0f} pts) |")
 

@@ -25,18 +25,11 @@ class YamlReader {
       value = field.as<T>();
     } catch (const YAML::Exception&) {
       throw ConfigError(prefix_ + info.name + ": cannot read '" + YAML::Dump(field) + "' as " +
-                        TypeName<T>());
+                        FieldTypeName<T>());
     }
   }
 
  private:
-  template <typename T>
-  static const char* TypeName() {
-    if (std::is_same<T, bool>::value) return "bool";
-    if (std::is_integral<T>::value) return "integer";
-    if (std::is_floating_point<T>::value) return "number";
-    return "string";
-  }
   const YAML::Node& node_;
   std::string prefix_;
   std::set<std::string>* used_;

@@ -24,7 +24,7 @@ class XmlRpcReader {
     XmlRpcValue field = tree_[info.name];  // a copy: the conversions are non-const
     if (!Read(field, &value)) {
       throw ConfigError(prefix_ + info.name + ": cannot read '" + field.toXml() + "' as " +
-                        TypeName<T>());
+                        FieldTypeName<T>());
     }
   }
 
@@ -54,13 +54,6 @@ class XmlRpcReader {
     if (v.getType() != XmlRpcValue::TypeInt) return false;
     *out = static_cast<T>(static_cast<int>(v));
     return true;
-  }
-  template <typename T>
-  static const char* TypeName() {
-    if (std::is_same<T, bool>::value) return "bool";
-    if (std::is_integral<T>::value) return "integer";
-    if (std::is_floating_point<T>::value) return "number";
-    return "string";
   }
   const XmlRpcValue& tree_;
   std::string prefix_;

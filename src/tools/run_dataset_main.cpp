@@ -23,7 +23,7 @@ namespace {
 
 struct Args {
   std::string dataset, camera, trajectory, status, config, summary;
-  bool static_points = true;
+  std::string static_points;  ///< "on", "off" or empty (the config's static_points.enabled)
   int max_frames = -1;
   bool quiet = false;
 };
@@ -54,7 +54,7 @@ bool Parse(int argc, char** argv, Args* args) {
     else if (key == "--summary") args->summary = value;
     else if (key == "--max-frames") args->max_frames = std::stoi(value);
     else if (key == "--static-points" && (value == "on" || value == "off"))
-      args->static_points = value == "on";
+      args->static_points = value;
     else return false;
   }
   return !args->dataset.empty() && !args->trajectory.empty();
@@ -116,7 +116,7 @@ void WriteSummaryJson(const std::string& path, const dslam::RunSummary& summary,
 int Run(const Args& args) {
   dslam::Config config;
   if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
-  config.static_points.enabled = args.static_points;
+  if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
   const auto masks = ReadMasks(args.dataset);
   dslam::Odometry odometry(config);
@@ -152,13 +152,15 @@ int Run(const Args& args) {
                 score.candidates_on_dynamic(), score.candidates_on_static());
   }
   if (!args.summary.empty()) {
-    WriteSummaryJson(args.summary, summary, score, !masks.empty(), args.static_points);
+    WriteSummaryJson(args.summary, summary, score, !masks.empty(),
+                     config.static_points.enabled);
   }
   std::printf("summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, median %.1f "
               "ms/frame -> %s\n",
               summary.frames(), summary.frames_with_pose(),
               100.0 * summary.frames_with_pose() / std::max(1, summary.frames()),
-              summary.lost_frames(), args.static_points ? "on" : "off", summary.MedianMs("total"),
+              summary.lost_frames(), config.static_points.enabled ? "on" : "off",
+              summary.MedianMs("total"),
               args.trajectory.c_str());
   return 0;
 }

@@ -35,6 +35,7 @@ TEST(ConstantVelocityModel, ForgetVelocityKeepsLastPose) {
   EXPECT_TRUE(model.Predict(0.2).isApprox(Pose(0.0, {0.1, 0, 0})));
   model.Reset();
   EXPECT_FALSE(model.has_pose());
+  EXPECT_TRUE(model.last_pose().isApprox(Eigen::Isometry3d::Identity()));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace dslam {
@@ -24,6 +25,15 @@ struct FieldInfo {
   const char* doc;    ///< one-line description
   std::vector<std::string> choices;  ///< allowed values for string fields (empty: any)
 };
+
+/// Name of a field's value type in error messages ("bool", "integer", "number", "string").
+template <typename T>
+const char* FieldTypeName() {
+  if (std::is_same<T, bool>::value) return "bool";
+  if (std::is_integral<T>::value) return "integer";
+  if (std::is_floating_point<T>::value) return "number";
+  return "string";
+}
 
 /// Bounds helpers for FieldInfo.
 constexpr double kNoMin = -std::numeric_limits<double>::infinity();

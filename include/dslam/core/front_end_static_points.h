@@ -1,8 +1,9 @@
 #pragma once
 // Front-end static point determination (paper Sec. V-A "Determination of Static Points by the
-// Front End"): after the initial pose, the tracked marked points with depth form a Delaunay
-// graph whose edges are checked against point-correlation measurements of two frames; points
-// outside the largest-volume component lose their mark.
+// Front End"): after the initial pose, the tracked points with depth (marked and unmarked, so a
+// wrongly unmarked point can be re-marked) form a Delaunay graph whose edges are checked against
+// point-correlation measurements of the current and reference frames; points in other
+// components with evidence against the static one lose their mark.
 //
 // Which frames: the paper compares the previous frame with the current one. At 30 Hz that
 // baseline is too short to see walking people (edge changes are the size of the depth noise,
@@ -29,7 +30,7 @@ struct FrontEndStaticPoints {
   bool ran = false;              ///< false when too few points had the needed measurements
 };
 
-/// Builds the problem over the marked matched points with a depth measurement in the current
+/// Builds the problem over the matched points with a depth measurement in the current
 /// frame (pose `T_camera_world`) and their measurements in `reference_frames` (keyframes and/or
 /// the previous frame, chosen by the caller), runs DetermineStaticPoints and returns the result.
 FrontEndStaticPoints DetermineStaticPointsFrontEnd(

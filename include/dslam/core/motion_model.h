@@ -18,8 +18,11 @@ class ConstantVelocityModel {
   /// Forgets the velocity (keeps the last pose), e.g. after tracking was lost.
   void ForgetVelocity() { has_velocity_ = false; }
 
-  /// Forgets everything.
-  void Reset() { has_pose_ = has_velocity_ = false; }
+  /// Forgets everything; the last pose becomes the identity (the world origin).
+  void Reset() {
+    has_pose_ = has_velocity_ = false;
+    T_world_last_ = Eigen::Isometry3d::Identity();
+  }
 
   bool has_pose() const { return has_pose_; }
   const Eigen::Isometry3d& last_pose() const { return T_world_last_; }

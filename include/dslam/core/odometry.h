@@ -26,7 +26,7 @@ class Odometry {
   /// Throws std::invalid_argument when frame.Check() fails.
   FrameResult ProcessFrame(const RgbdFrame& frame);
 
-  /// Forgets the map, the motion model and the trajectory origin; the next frame initialises.
+  /// Forgets the map and the motion model; the next frame initialises at the world origin.
   void Reset();
 
   const Map& map() const { return map_; }     ///< the local map (for visualisation)

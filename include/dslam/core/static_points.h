@@ -2,8 +2,10 @@
 // Static point determination (paper Sec. IV and V-A, Algorithm 1): Delaunay graph over the
 // points -> inconsistent edge culling with point-correlation measurements -> connected
 // components -> the component with the largest convex-hull volume is static.
-// Front end: the tracked points of the previous frame with the two frames' measurements.
-// Back end: the marked points of the window with all their keyframe observations.
+// The caller chooses the points and frames: the front end (front_end_static_points.h) passes
+// the current frame's tracked points with their measurements in the current frame and in
+// keyframes spread over the window; a back end would pass the window's marked points with all
+// their keyframe observations (Algorithm 1).
 
 #include <vector>
 
