@@ -70,6 +70,7 @@ def row(name, on, off):
     ratio = off["ate_rmse_m"] / max(on["ate_rmse_m"], 1e-9)
     seg = (f"{on['dynamic_precision']:.3f} | {on['dynamic_recall']:.3f} | "
            f"{on['false_dynamic_rate']:.4f}") if "dynamic_recall" in on else "- | - | -"
+    seg += f" | {on['labelled_dynamic_share']:.4f}"
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
     return (f"| {name} | {on['ate_rmse_m']:.4f} | {off['ate_rmse_m']:.4f} | {ratio:.1f}x | "
             f"{fmt(on.get('rpe_trans_rmse_m_per_s'))} | {tracked:.3f} | {fmt(on['coverage'], 3)} | {seg} | "
@@ -94,8 +95,8 @@ def main():
     parser.add_argument("--config", default="")
     args = parser.parse_args()
     header = ("| sequence | ATE on [m] | ATE off [m] | off/on | RPE on [m/s] | tracked | coverage | "
-              "dyn. precision | dyn. recall | static wrongly dyn. | total [ms] | SPD [ms] |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|")
+              "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | total [ms] | "
+              "SPD [ms] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     print(header)
     started = time.time()
     seeds = [int(s) for s in args.seeds.split(",") if s]

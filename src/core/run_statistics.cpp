@@ -48,6 +48,8 @@ void RunSummary::Add(const FrameResult& result) {
   ++frames_;
   if (result.has_pose) ++with_pose_;
   if (result.state == TrackingState::kLost) ++lost_;
+  labelled_static_ += result.counts.static_points;
+  labelled_dynamic_ += result.counts.dynamic_points;
   if (result.state == TrackingState::kTracking || result.state == TrackingState::kRecovered) {
     times_.push_back(result.times);
     graph_points_.push_back(result.counts.graph_points);
@@ -70,6 +72,11 @@ double RunSummary::MedianMs(const std::string& stage) const {
 }
 
 double RunSummary::MedianGraphPoints() const { return Median(graph_points_); }
+
+double RunSummary::LabelledDynamicShare() const {
+  const long all = labelled_static_ + labelled_dynamic_;
+  return all == 0 ? 0.0 : static_cast<double>(labelled_dynamic_) / all;
+}
 
 void RunSummary::PrintStages(std::ostream& out) const {
   char line[160];

@@ -94,7 +94,8 @@ void WriteSummaryJson(const std::string& path, const dslam::RunSummary& summary,
       << ",\n  \"frames_with_pose\": " << summary.frames_with_pose()
       << ",\n  \"lost_frames\": " << summary.lost_frames()
       << ",\n  \"static_points\": " << (static_points ? "true" : "false")
-      << ",\n  \"median_graph_points\": " << summary.MedianGraphPoints();
+      << ",\n  \"median_graph_points\": " << summary.MedianGraphPoints()
+      << ",\n  \"labelled_dynamic_share\": " << summary.LabelledDynamicShare();
   for (const char* stage : {"features", "matching", "initial_pose", "static_points", "refine",
                             "mapping", "total"}) {
     out << ",\n  \"median_" << stage << "_ms\": " << summary.MedianMs(stage);

@@ -9,7 +9,7 @@ namespace ros_layer {
 namespace {
 
 TEST(LatestSlot, KeepsTheNewestAndCountsDrops) {
-  LatestSlot<int> slot;
+  LatestSlot<int> slot(1);
   EXPECT_FALSE(slot.Put(1));
   EXPECT_TRUE(slot.Put(2));
   EXPECT_TRUE(slot.Put(3));
@@ -17,6 +17,16 @@ TEST(LatestSlot, KeepsTheNewestAndCountsDrops) {
   EXPECT_EQ(*slot.Take(), 3);
   EXPECT_FALSE(slot.Put(4));
   EXPECT_EQ(*slot.Take(), 4);
+}
+
+TEST(LatestSlot, AbsorbsABurstUpToItsCapacityInOrder) {
+  LatestSlot<int> slot(2);
+  EXPECT_FALSE(slot.Put(1));
+  EXPECT_FALSE(slot.Put(2));  // a burst of two: nothing dropped
+  EXPECT_TRUE(slot.Put(3));   // the third drops the oldest
+  EXPECT_EQ(slot.dropped(), 1u);
+  EXPECT_EQ(*slot.Take(), 2);
+  EXPECT_EQ(*slot.Take(), 3);
 }
 
 TEST(LatestSlot, CloseWakesABlockedTake) {

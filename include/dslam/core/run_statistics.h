@@ -38,10 +38,15 @@ class RunSummary {
   /// Median number of points in the front-end graph over tracked frames.
   double MedianGraphPoints() const;
 
+  /// [-] Share of matched-point observations labelled dynamic (unmarked), over all frames: on a
+  /// static scene, the share wrongly marked dynamic.
+  double LabelledDynamicShare() const;
+
  private:
   int frames_ = 0, with_pose_ = 0, lost_ = 0;
   std::vector<StageTimes> times_;
   std::vector<double> graph_points_;
+  long labelled_static_ = 0, labelled_dynamic_ = 0;
 };
 
 }  // namespace dslam

@@ -1,7 +1,7 @@
 #pragma once
 // dslam/OdometryNodelet: synchronizes colour, depth and camera_info (relative, remappable names
 // rgb/image, depth/image, rgb/camera_info), runs dslam::Odometry on a worker thread fed by a
-// one-slot latest-frame queue, and publishes through FramePublisher. Services: `reset`
+// two-frame bounded queue (it absorbs the bursts of the ApproximateTime synchronizer), and publishes through FramePublisher. Services: `reset`
 // (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
 
 #include <atomic>
