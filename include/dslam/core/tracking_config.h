@@ -10,7 +10,7 @@ namespace dslam {
 
 /// Local-map tracking, keyframe policy, point management and recovery (odometry.h).
 struct TrackingConfig {
-  int window_keyframes = 8;          ///< [-] keyframes whose points form the local map
+  int window_keyframes = 12;         ///< [-] keyframes whose points form the local map
   double search_radius_px = 10.0;    ///< [px] projection search radius at octave 0
   double wide_search_radius_px = 30.0;  ///< [px] radius when the narrow search finds too few
   int min_matches = 40;              ///< [-] fewer matches in the narrow search: search wide
@@ -19,7 +19,7 @@ struct TrackingConfig {
   /// front_end_keyframes keyframes spread over the window), "previous" (the paper: the previous
   /// frame) or "both".
   std::string front_end_reference = "keyframes";
-  int front_end_keyframes = 4;       ///< [-] keyframes used by "keyframes" / "both"
+  int front_end_keyframes = 6;       ///< [-] keyframes used by "keyframes" / "both"
   int front_end_min_age_frames = 5;  ///< [frames] younger keyframes are not used (too short)
   int keyframe_max_interval = 10;    ///< [frames] a keyframe at least this often
   int keyframe_min_interval = 3;     ///< [frames] and at most this often
