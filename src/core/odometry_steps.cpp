@@ -11,7 +11,8 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
                                    bool wide) {
   const TrackingConfig& cfg = config_.tracking;
   const PinholeCamera& camera = *current->frame->camera;
-  const std::vector<PointId> local = map_.LocalPoints(last_tracked_);
+  current->local_points = map_.LocalPoints(last_tracked_);
+  const std::vector<PointId>& local = current->local_points;
   const double radius = wide ? cfg.wide_search_radius_px : cfg.search_radius_px;
   current->matches = MatchLocalMap(&map_, local, current->features, camera, T_camera_world, radius,
                                    true, &current->feature_taken);
@@ -104,7 +105,7 @@ bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result)
   std::unordered_set<PointId> matched;
   for (const PointMatch& m : current->matches) matched.insert(m.id);
   std::vector<PointId> rest;
-  for (PointId id : map_.LocalPoints(last_tracked_)) {
+  for (PointId id : current->local_points) {
     if (!matched.count(id)) rest.push_back(id);
   }
   const std::vector<PointMatch> more =

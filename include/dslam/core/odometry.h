@@ -38,6 +38,7 @@ class Odometry {
     const RgbdFrame* frame = nullptr;
     FrameFeatures features;
     std::vector<bool> feature_taken;
+    std::vector<PointId> local_points;  ///< the local map searched in this frame
     std::vector<PointMatch> matches;
     std::vector<bool> excluded;  ///< per match: left out of the refined pose (isolated/dynamic)
     Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
