@@ -50,8 +50,8 @@ int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible)
   for (auto it = points_.begin(); it != points_.end();) {
     const MapPoint& p = it->second;
     const bool stale = p.last_seen_frame < oldest_frame_to_keep && !in_window.count(p.id);
-    const bool unreliable = p.times_visible >= min_visible &&
-                            p.times_found < min_found_ratio * p.times_visible;
+    const bool unreliable =
+        p.times_visible >= min_visible && p.times_found < min_found_ratio * p.times_visible;
     if (stale || unreliable) {
       it = points_.erase(it);
       ++removed;

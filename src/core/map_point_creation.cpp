@@ -32,8 +32,8 @@ std::vector<bool> DynamicNeighbourhood(const FrameFeatures& features,
 std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
                                      const std::vector<bool>& feature_taken,
                                      const std::vector<bool>& dynamic_neighbourhood,
-                                     const CreationContext& context,
-                                     const TrackingConfig& config, Map* map) {
+                                     const CreationContext& context, const TrackingConfig& config,
+                                     Map* map) {
   std::vector<int> candidates;
   for (size_t f = 0; f < features.features.size(); ++f) {
     if (!feature_taken[f] && features.features[f].measurement) candidates.push_back(f);

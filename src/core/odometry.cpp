@@ -40,7 +40,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
   result.times.matching_ms = stage.Restart();
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
-  const bool have_initial_pose = EstimateInitialPose(&current, &result);
+  const bool have_initial_pose = EstimateInitialPose(&current, T_camera_world_predicted, &result);
   result.times.initial_pose_ms = stage.Restart();
   if (!have_initial_pose) return Lost(&current, std::move(result), "too few pose inliers");
 
@@ -56,7 +56,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
 
   // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
   UpdateMatchedPoints(current);
-  if (NeedKeyFrame(current, current.pose.num_inliers)) {
+  if (NeedKeyFrame(current.pose.num_inliers)) {
     result.counts.new_points = MakeKeyFrame(current);
     result.keyframe = true;
   }

@@ -18,24 +18,29 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
                                    true, &current->feature_taken);
   if (static_cast<int>(current->matches.size()) >= cfg.min_matches || wide) return;
   // Too few: the prediction was off (sudden motion). Search the rest with a wide radius.
+  MatchUnmatchedLocalPoints(current, T_camera_world, cfg.wide_search_radius_px);
+}
+
+void Odometry::MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
+                                         double radius_px) {
   std::unordered_set<PointId> matched;
   for (const PointMatch& m : current->matches) matched.insert(m.id);
   std::vector<PointId> rest;
-  for (PointId id : local) {
+  for (PointId id : current->local_points) {
     if (!matched.count(id)) rest.push_back(id);
   }
   const std::vector<PointMatch> more =
-      MatchLocalMap(&map_, rest, current->features, camera, T_camera_world,
-                    cfg.wide_search_radius_px, false, &current->feature_taken);
+      MatchLocalMap(&map_, rest, current->features, *current->frame->camera, T_camera_world,
+                    radius_px, false, &current->feature_taken);
   current->matches.insert(current->matches.end(), more.begin(), more.end());
 }
 
 PoseResult Odometry::SolvePoseFromStaticPoints(const Current& current,
                                                const Eigen::Isometry3d& T_camera_world) const {
   const PinholeCamera& camera = *current.frame->camera;
-  PoseResult verified = EstimatePoseFromMatches(map_, current.matches, current.features, camera,
-                                                T_camera_world, PointSelection::kVerified,
-                                                current.excluded, config_);
+  PoseResult verified =
+      EstimatePoseFromMatches(map_, current.matches, current.features, camera, T_camera_world,
+                              PointSelection::kVerified, current.excluded, config_);
   if (verified.success && verified.num_inliers >= config_.tracking.min_static_inliers) {
     return verified;
   }
@@ -44,10 +49,10 @@ PoseResult Odometry::SolvePoseFromStaticPoints(const Current& current,
                                  PointSelection::kMarked, current.excluded, config_);
 }
 
-bool Odometry::EstimateInitialPose(Current* current, FrameResult* result) {
+bool Odometry::EstimateInitialPose(Current* current, const Eigen::Isometry3d& T_predicted,
+                                   FrameResult* result) {
   const PinholeCamera& camera = *current->frame->camera;
   const int min_inliers = config_.tracking.min_static_inliers;
-  const Eigen::Isometry3d T_predicted = motion_.Predict(current->frame->stamp_s).inverse();
   current->pose = SolvePoseFromStaticPoints(*current, T_predicted);
   if (current->pose.success && current->pose.num_inliers >= min_inliers) {
     current->T_camera_world = current->pose.T_camera_world;
@@ -55,8 +60,9 @@ bool Odometry::EstimateInitialPose(Current* current, FrameResult* result) {
   }
   // Marked points are too few (people fill the view, or the prediction failed): a robust pose
   // over all matches beats coasting on the motion model (field notes).
-  current->pose = EstimateRobustPoseFromMatches(map_, current->matches, current->features, camera, config_,
-                                     static_cast<uint32_t>(result->frame_index));
+  current->pose =
+      EstimateRobustPoseFromMatches(map_, current->matches, current->features, camera, config_,
+                                    static_cast<uint32_t>(result->frame_index));
   if (!current->pose.success || current->pose.num_inliers < min_inliers) return false;
   current->T_camera_world = current->pose.T_camera_world;
   current->from_robust_pose = true;
@@ -87,13 +93,12 @@ std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const 
 
 void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
   if (!config_.static_points.enabled) return;  // the static-world baseline
-  current->static_points =
-      DetermineStaticPointsFrontEnd(map_, current->matches, current->features,
-                                    current->T_camera_world, FrontEndReferenceFrames(),
-                                    config_.static_points);
-  current->excluded = ApplyStaticLabels(
-      current->static_points, current->matches, config_.tracking.isolated_frames_to_unmark,
-      result->frame_index, config_.tracking.verify_frames, &map_);
+  current->static_points = DetermineStaticPointsFrontEnd(
+      map_, current->matches, current->features, current->T_camera_world, FrontEndReferenceFrames(),
+      config_.static_points);
+  current->excluded = ApplyStaticLabels(current->static_points, current->matches,
+                                        config_.tracking.isolated_frames_to_unmark,
+                                        result->frame_index, config_.tracking.verify_frames, &map_);
   const StaticPointsStats& stats = current->static_points.result.stats;
   result->counts.graph_points = stats.points;
   result->counts.graph_edges = stats.edges;
@@ -102,16 +107,7 @@ void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
 
 bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result) {
   const PinholeCamera& camera = *current->frame->camera;
-  std::unordered_set<PointId> matched;
-  for (const PointMatch& m : current->matches) matched.insert(m.id);
-  std::vector<PointId> rest;
-  for (PointId id : current->local_points) {
-    if (!matched.count(id)) rest.push_back(id);
-  }
-  const std::vector<PointMatch> more =
-      MatchLocalMap(&map_, rest, current->features, camera, current->T_camera_world,
-                    config_.tracking.search_radius_px, false, &current->feature_taken);
-  current->matches.insert(current->matches.end(), more.begin(), more.end());
+  MatchUnmatchedLocalPoints(current, current->T_camera_world, config_.tracking.search_radius_px);
 
   current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged
   PoseResult refined = SolvePoseFromStaticPoints(*current, current->T_camera_world);
@@ -119,8 +115,9 @@ bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result)
   if (refined.success && refined.num_inliers >= min_inliers) {
     current->pose = std::move(refined);
   } else {
-    current->pose = EstimateRobustPoseFromMatches(map_, current->matches, current->features, camera,
-                                       config_, static_cast<uint32_t>(result->frame_index) + 1u);
+    current->pose =
+        EstimateRobustPoseFromMatches(map_, current->matches, current->features, camera, config_,
+                                      static_cast<uint32_t>(result->frame_index) + 1u);
     if (!current->pose.success || current->pose.num_inliers < min_inliers) return false;
     current->from_robust_pose = true;
   }
@@ -153,7 +150,7 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
   }
 }
 
-bool Odometry::NeedKeyFrame(const Current& current, int static_matches) const {
+bool Odometry::NeedKeyFrame(int static_matches) const {
   const TrackingConfig& cfg = config_.tracking;
   const int since = frame_index_ - 1 - last_keyframe_frame_;
   if (since >= cfg.keyframe_max_interval) return true;
@@ -185,15 +182,14 @@ int Odometry::MakeKeyFrame(const Current& current) {
   if (cfg.fuse_static_points) FuseStaticPoints(current);
   const int frame_index = frame_index_ - 1;
   const std::vector<bool> dynamic =
-      config_.static_points.enabled
-          ? DynamicNeighbourhood(current.features, current.matches, map_,
-                                 cfg.dynamic_neighbour_radius_px)
-          : std::vector<bool>(current.features.features.size(), false);
+      config_.static_points.enabled ? DynamicNeighbourhood(current.features, current.matches, map_,
+                                                           cfg.dynamic_neighbour_radius_px)
+                                    : std::vector<bool>(current.features.features.size(), false);
   CreationContext context{current.T_camera_world.inverse(), frame_index,
                           map_.keyframes().empty() ? 0 : map_.keyframes().back().id + 1,
                           config_.static_points.enabled && cfg.verify_frames > 0};
-  const std::vector<PointId> created = CreateMapPoints(current.features, current.feature_taken,
-                                                       dynamic, context, cfg, &map_);
+  const std::vector<PointId> created =
+      CreateMapPoints(current.features, current.feature_taken, dynamic, context, cfg, &map_);
   KeyFrame keyframe;
   keyframe.frame_index = frame_index;
   keyframe.stamp_s = current.frame->stamp_s;

@@ -55,20 +55,19 @@ PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>
                                    PointSelection selection, const std::vector<bool>& excluded,
                                    const Config& config) {
   const Observations obs =
-      BuildObservations(map, matches, features, T_camera_world_init.rotation(), selection,
-                        excluded, config.depth_noise.pixel_sigma_px);
+      BuildObservations(map, matches, features, T_camera_world_init.rotation(), selection, excluded,
+                        config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePose(obs.observations, T_camera_world_init, camera, config.pose), obs,
                    matches.size());
 }
 
 PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
-                                         const FrameFeatures& features,
-                                         const PinholeCamera& camera, const Config& config,
-                                         uint32_t seed) {
+                                         const FrameFeatures& features, const PinholeCamera& camera,
+                                         const Config& config, uint32_t seed) {
   // The map covariance is rotated with an unknown pose here: leave it to RANSAC's extra sigma.
-  const Observations obs = BuildObservations(map, matches, features, Eigen::Matrix3d::Zero(),
-                                             PointSelection::kAll, {},
-                                             config.depth_noise.pixel_sigma_px);
+  const Observations obs =
+      BuildObservations(map, matches, features, Eigen::Matrix3d::Zero(), PointSelection::kAll, {},
+                        config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePoseRobust(obs.observations, camera, config.pose, seed), obs,
                    matches.size());
 }

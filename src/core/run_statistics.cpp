@@ -8,16 +8,21 @@ namespace dslam {
 
 const char* ToString(TrackingState state) {
   switch (state) {
-    case TrackingState::kInitialised: return "initialised";
-    case TrackingState::kTracking: return "tracking";
-    case TrackingState::kRecovered: return "recovered";
-    case TrackingState::kLost: return "lost";
+    case TrackingState::kInitialised:
+      return "initialised";
+    case TrackingState::kTracking:
+      return "tracking";
+    case TrackingState::kRecovered:
+      return "recovered";
+    case TrackingState::kLost:
+      return "lost";
   }
   return "unknown";
 }
 
 std::string StatusCsvHeader() {
-  return "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,candidates,"
+  return "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
+         "candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
          "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms";
 }
@@ -26,14 +31,14 @@ std::string StatusCsvRow(const FrameResult& r) {
   const FrameCounts& c = r.counts;
   const StageTimes& t = r.times;
   char buffer[512];
-  std::snprintf(buffer, sizeof(buffer),
-                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f",
-                r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
-                c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
-                c.candidate_points,
-                c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges, c.map_points,
-                c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
-                t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms);
+  std::snprintf(
+      buffer, sizeof(buffer),
+      "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f",
+      r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
+      c.features_with_depth, c.tracked, c.static_points, c.dynamic_points, c.candidate_points,
+      c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges, c.map_points, c.new_points,
+      t.features_ms, t.matching_ms, t.initial_pose_ms, t.static_points_ms, t.refine_ms,
+      t.mapping_ms, t.total_ms);
   return buffer;
 }
 
@@ -81,8 +86,8 @@ double RunSummary::LabelledDynamicShare() const {
 void RunSummary::PrintStages(std::ostream& out) const {
   char line[160];
   out << "stage              median [ms]\n";
-  for (const char* stage : {"features", "matching", "initial_pose", "static_points", "refine",
-                            "mapping", "total"}) {
+  for (const char* stage :
+       {"features", "matching", "initial_pose", "static_points", "refine", "mapping", "total"}) {
     std::snprintf(line, sizeof(line), "%-18s %8.2f\n", stage, MedianMs(stage));
     out << line;
   }

@@ -40,6 +40,8 @@ void SegmentationScore::Add(const std::vector<ObservedPoint>& points, const cv::
 
 double SegmentationScore::Precision() const { return Ratio(tp_, tp_ + fp_); }
 double SegmentationScore::Recall() const { return Ratio(tp_, tp_ + fn_); }
-double SegmentationScore::FalseDynamicRate() const { return fp_ + tn_ == 0 ? 0.0 : Ratio(fp_, fp_ + tn_); }
+double SegmentationScore::FalseDynamicRate() const {
+  return fp_ + tn_ == 0 ? 0.0 : Ratio(fp_, fp_ + tn_);
+}
 
 }  // namespace dslam

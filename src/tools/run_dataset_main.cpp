@@ -46,16 +46,24 @@ bool Parse(int argc, char** argv, Args* args) {
     }
     if (i + 1 >= argc) return false;
     const std::string value = argv[++i];
-    if (key == "--dataset") args->dataset = value;
-    else if (key == "--camera") args->camera = value;
-    else if (key == "--trajectory") args->trajectory = value;
-    else if (key == "--status") args->status = value;
-    else if (key == "--config") args->config = value;
-    else if (key == "--summary") args->summary = value;
-    else if (key == "--max-frames") args->max_frames = std::stoi(value);
+    if (key == "--dataset")
+      args->dataset = value;
+    else if (key == "--camera")
+      args->camera = value;
+    else if (key == "--trajectory")
+      args->trajectory = value;
+    else if (key == "--status")
+      args->status = value;
+    else if (key == "--config")
+      args->config = value;
+    else if (key == "--summary")
+      args->summary = value;
+    else if (key == "--max-frames")
+      args->max_frames = std::stoi(value);
     else if (key == "--static-points" && (value == "on" || value == "off"))
       args->static_points = value;
-    else return false;
+    else
+      return false;
   }
   return !args->dataset.empty() && !args->trajectory.empty();
 }
@@ -96,8 +104,8 @@ void WriteSummaryJson(const std::string& path, const dslam::RunSummary& summary,
       << ",\n  \"static_points\": " << (static_points ? "true" : "false")
       << ",\n  \"median_graph_points\": " << summary.MedianGraphPoints()
       << ",\n  \"labelled_dynamic_share\": " << summary.LabelledDynamicShare();
-  for (const char* stage : {"features", "matching", "initial_pose", "static_points", "refine",
-                            "mapping", "total"}) {
+  for (const char* stage :
+       {"features", "matching", "initial_pose", "static_points", "refine", "mapping", "total"}) {
     out << ",\n  \"median_" << stage << "_ms\": " << summary.MedianMs(stage);
   }
   if (scored) {
@@ -129,8 +137,8 @@ int Run(const Args& args) {
     status.open(args.status);
     status << dslam::StatusCsvHeader() << "\n";
   }
-  const size_t n = args.max_frames < 0 ? dataset.size()
-                                       : std::min<size_t>(dataset.size(), args.max_frames);
+  const size_t n =
+      args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
   for (size_t i = 0; i < n; ++i) {
     const dslam::FrameResult r = odometry.ProcessFrame(dataset.LoadFrame(i));
     summary.Add(r);
@@ -146,23 +154,23 @@ int Run(const Args& args) {
   dslam::WriteTumTrajectory(args.trajectory, trajectory);
   summary.PrintStages(std::cout);
   if (!masks.empty()) {
-    std::printf("segmentation: dynamic precision %.3f recall %.3f, static wrongly dynamic %.4f "
-                "(tp %ld fp %ld fn %ld tn %ld; not yet judged: %ld on objects, %ld static)\n",
-                score.Precision(), score.Recall(), score.FalseDynamicRate(), score.true_dynamic(),
-                score.false_dynamic(), score.missed_dynamic(), score.true_static(),
-                score.candidates_on_dynamic(), score.candidates_on_static());
+    std::printf(
+        "segmentation: dynamic precision %.3f recall %.3f, static wrongly dynamic %.4f "
+        "(tp %ld fp %ld fn %ld tn %ld; not yet judged: %ld on objects, %ld static)\n",
+        score.Precision(), score.Recall(), score.FalseDynamicRate(), score.true_dynamic(),
+        score.false_dynamic(), score.missed_dynamic(), score.true_static(),
+        score.candidates_on_dynamic(), score.candidates_on_static());
   }
   if (!args.summary.empty()) {
-    WriteSummaryJson(args.summary, summary, score, !masks.empty(),
-                     config.static_points.enabled);
+    WriteSummaryJson(args.summary, summary, score, !masks.empty(), config.static_points.enabled);
   }
-  std::printf("summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, median %.1f "
-              "ms/frame -> %s\n",
-              summary.frames(), summary.frames_with_pose(),
-              100.0 * summary.frames_with_pose() / std::max(1, summary.frames()),
-              summary.lost_frames(), config.static_points.enabled ? "on" : "off",
-              summary.MedianMs("total"),
-              args.trajectory.c_str());
+  std::printf(
+      "summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, median %.1f "
+      "ms/frame -> %s\n",
+      summary.frames(), summary.frames_with_pose(),
+      100.0 * summary.frames_with_pose() / std::max(1, summary.frames()), summary.lost_frames(),
+      config.static_points.enabled ? "on" : "off", summary.MedianMs("total"),
+      args.trajectory.c_str());
   return 0;
 }
 

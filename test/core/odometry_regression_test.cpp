@@ -52,8 +52,7 @@ RunResult RunOdometry(const Rendered& rendered, bool static_points) {
     }
     out.score.Add(result.points, rendered.masks[i]);
   }
-  out.metrics =
-      EvaluateTrajectory(estimated, rendered.groundtruth, {}, TrajectoryMetricsOptions());
+  out.metrics = EvaluateTrajectory(estimated, rendered.groundtruth, {}, TrajectoryMetricsOptions());
   return out;
 }
 

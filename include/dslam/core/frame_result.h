@@ -27,9 +27,9 @@ const char* ToString(TrackingState state);
 /// A map point matched in the frame, with its label at the end of the frame.
 struct ObservedPoint {
   PointId id = -1;
-  Eigen::Vector2d uv_raw = Eigen::Vector2d::Zero();  ///< [px] keypoint in the raw colour image
+  Eigen::Vector2d uv_raw = Eigen::Vector2d::Zero();   ///< [px] keypoint in the raw colour image
   Eigen::Vector3d p_world = Eigen::Vector3d::Zero();  ///< [m] map point position, world frame
-  bool is_static = true;     ///< marked (not known to move) at the end of the frame
+  bool is_static = true;      ///< marked (not known to move) at the end of the frame
   bool is_candidate = false;  ///< marked but not yet verified: not used for the pose
 };
 
@@ -41,18 +41,18 @@ struct GraphEdgeView {
 
 /// Counts of one frame.
 struct FrameCounts {
-  int features = 0;         ///< ORB keypoints extracted
+  int features = 0;             ///< ORB keypoints extracted
   int features_with_depth = 0;  ///< of which with a valid depth measurement
-  int tracked = 0;          ///< map points matched in the frame
-  int static_points = 0;    ///< matched and marked at the end of the frame
-  int dynamic_points = 0;   ///< matched and unmarked at the end of the frame
-  int candidate_points = 0;  ///< of the static points: candidates not yet verified
-  int pose_inliers = 0;     ///< inliers of the final pose estimate
-  int graph_points = 0;     ///< points in the front-end graph
-  int graph_edges = 0;      ///< edges in the front-end graph
-  int culled_edges = 0;     ///< inconsistent edges removed
-  int map_points = 0;       ///< map size after the frame
-  int new_points = 0;       ///< map points created (keyframes only)
+  int tracked = 0;              ///< map points matched in the frame
+  int static_points = 0;        ///< matched and marked at the end of the frame
+  int dynamic_points = 0;       ///< matched and unmarked at the end of the frame
+  int candidate_points = 0;     ///< of the static points: candidates not yet verified
+  int pose_inliers = 0;         ///< inliers of the final pose estimate
+  int graph_points = 0;         ///< points in the front-end graph
+  int graph_edges = 0;          ///< edges in the front-end graph
+  int culled_edges = 0;         ///< inconsistent edges removed
+  int map_points = 0;           ///< map size after the frame
+  int new_points = 0;           ///< map points created (keyframes only)
 };
 
 /// Wall-clock time of each stage [ms].
@@ -81,8 +81,8 @@ struct FrameResult {
   std::string message;    ///< why the frame was lost / reset, empty otherwise
   FrameCounts counts;
   StageTimes times;
-  std::vector<ObservedPoint> points;   ///< matched map points with their labels
-  std::vector<GraphEdgeView> edges;    ///< front-end graph (kept and culled edges)
+  std::vector<ObservedPoint> points;  ///< matched map points with their labels
+  std::vector<GraphEdgeView> edges;   ///< front-end graph (kept and culled edges)
 };
 
 }  // namespace dslam

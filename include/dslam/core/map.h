@@ -19,18 +19,18 @@ using PointId = int64_t;
 
 /// One 3D landmark. Positions are in the world frame [m].
 struct MapPoint {
-  PointId id = -1;                                      ///< assigned by Map::AddPoint
-  Eigen::Vector3d p_world = Eigen::Vector3d::Zero();    ///< position [m], world frame
+  PointId id = -1;                                          ///< assigned by Map::AddPoint
+  Eigen::Vector3d p_world = Eigen::Vector3d::Zero();        ///< position [m], world frame
   Eigen::Matrix3d cov_world = Eigen::Matrix3d::Identity();  ///< position covariance [m^2]
-  cv::Mat descriptor;    ///< 1x32 CV_8U ORB descriptor of the observation that created it
-  int octave = 0;        ///< pyramid level of that observation
+  cv::Mat descriptor;        ///< 1x32 CV_8U ORB descriptor of the observation that created it
+  int octave = 0;            ///< pyramid level of that observation
   int created_feature = -1;  ///< index of that observation's feature in its frame
   double reference_distance_m = 0.0;  ///< [m] camera distance of that observation
-  bool marked = true;    ///< not known to move: only marked points drive motion estimation
+  bool marked = true;  ///< not known to move: only marked points drive motion estimation
   /// New and not yet verified static over a long enough baseline: matched (so it claims its
   /// feature) but used for the pose only when verified points are too few.
   bool candidate = false;
-  int keyframe_id = -1;  ///< keyframe that created the point (its reference observation)
+  int keyframe_id = -1;     ///< keyframe that created the point (its reference observation)
   int created_frame = 0;    ///< frame index of creation
   int last_seen_frame = 0;  ///< last frame index where it was matched
   int times_visible = 0;    ///< frames where it projected into the image
@@ -42,16 +42,16 @@ struct MapPoint {
 /// point-correlation measurements z_ijk = y_ik - y_jk (paper Eq. meas_con_imp).
 struct FrameMeasurements {
   Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();  ///< world -> optical frame
-  std::unordered_map<PointId, PointMeasurement> by_point;  ///< y and C per measured point
+  std::unordered_map<PointId, PointMeasurement> by_point;            ///< y and C per measured point
 };
 
 /// A keyframe: the pose of a frame that created map points.
 struct KeyFrame {
-  int id = -1;                  ///< sequential keyframe id
-  int frame_index = 0;          ///< index of the frame it was made from
-  double stamp_s = 0.0;         ///< [s]
+  int id = -1;           ///< sequential keyframe id
+  int frame_index = 0;   ///< index of the frame it was made from
+  double stamp_s = 0.0;  ///< [s]
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
-  std::vector<PointId> points;  ///< map points it observed (created or matched) when it was made
+  std::vector<PointId> points;     ///< map points it observed (created or matched) when it was made
   FrameMeasurements measurements;  ///< y and C of those points measured with depth in it
 };
 

@@ -18,8 +18,8 @@ namespace dslam {
 /// Frame facts that new points record.
 struct CreationContext {
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< keyframe pose
-  int frame_index = 0;   ///< frame the keyframe was made from
-  int keyframe_id = -1;  ///< id the keyframe will get
+  int frame_index = 0;                     ///< frame the keyframe was made from
+  int keyframe_id = -1;                    ///< id the keyframe will get
   bool new_points_are_candidates = false;  ///< new points wait for verification (see MapPoint)
 };
 
@@ -35,7 +35,7 @@ std::vector<bool> DynamicNeighbourhood(const FrameFeatures& features,
 std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
                                      const std::vector<bool>& feature_taken,
                                      const std::vector<bool>& dynamic_neighbourhood,
-                                     const CreationContext& context,
-                                     const TrackingConfig& config, Map* map);
+                                     const CreationContext& context, const TrackingConfig& config,
+                                     Map* map);
 
 }  // namespace dslam

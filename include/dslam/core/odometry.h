@@ -29,7 +29,7 @@ class Odometry {
   /// Forgets the map and the motion model; the next frame initialises at the world origin.
   void Reset();
 
-  const Map& map() const { return map_; }     ///< the local map (for visualisation)
+  const Map& map() const { return map_; }  ///< the local map (for visualisation)
   const Config& config() const { return config_; }
 
  private:
@@ -52,12 +52,15 @@ class Odometry {
   void MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world, bool wide);
   PoseResult SolvePoseFromStaticPoints(const Current& current,
                                        const Eigen::Isometry3d& T_camera_world) const;
-  bool EstimateInitialPose(Current* current, FrameResult* result);
+  void MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
+                                 double radius_px);
+  bool EstimateInitialPose(Current* current, const Eigen::Isometry3d& T_predicted,
+                           FrameResult* result);
   std::vector<const FrameMeasurements*> FrontEndReferenceFrames() const;
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
-  bool NeedKeyFrame(const Current& current, int static_matches) const;
+  bool NeedKeyFrame(int static_matches) const;
   int MakeKeyFrame(const Current& current);
   void FuseStaticPoints(const Current& current);
   FrameMeasurements MeasurementsOf(const Current& current,
@@ -68,8 +71,8 @@ class Odometry {
   Config config_;
   Map map_;
   ConstantVelocityModel motion_;
-  FrameMeasurements previous_;          ///< measurements of the previous tracked frame
-  std::vector<PointId> last_tracked_;   ///< points matched in the previous tracked frame
+  FrameMeasurements previous_;         ///< measurements of the previous tracked frame
+  std::vector<PointId> last_tracked_;  ///< points matched in the previous tracked frame
   bool initialised_ = false;
   bool have_stamp_ = false;
   double last_stamp_s_ = 0.0;

@@ -17,9 +17,9 @@ namespace dslam {
 
 /// Which matched map points a pose estimate uses.
 enum class PointSelection {
-  kVerified,            ///< marked and verified (no candidates)
-  kMarked,              ///< marked, candidates included
-  kAll,                 ///< every match
+  kVerified,  ///< marked and verified (no candidates)
+  kMarked,    ///< marked, candidates included
+  kAll,       ///< every match
 };
 
 /// Motion-only BA (Huber, chi-square inlier rounds) from `T_camera_world_init` over the matches
@@ -37,8 +37,7 @@ PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>
 /// RANSAC over the 3D-3D correspondences of all matches (marked or not), refined by motion-only
 /// BA; `inliers` parallel to `matches`. Deterministic for a given `seed`.
 PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
-                                         const FrameFeatures& features,
-                                         const PinholeCamera& camera, const Config& config,
-                                         uint32_t seed);
+                                         const FrameFeatures& features, const PinholeCamera& camera,
+                                         const Config& config, uint32_t seed);
 
 }  // namespace dslam

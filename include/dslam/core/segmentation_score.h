@@ -28,7 +28,7 @@ class SegmentationScore {
   long missed_dynamic() const { return fn_; }  ///< labelled static, on a moving object
   long true_static() const { return tn_; }     ///< labelled static, on the static world
   long skipped() const { return skipped_; }    ///< near a mask edge or outside the image
-  long candidates_on_dynamic() const { return cand_dyn_; }  ///< not yet judged, on an object
+  long candidates_on_dynamic() const { return cand_dyn_; }    ///< not yet judged, on an object
   long candidates_on_static() const { return cand_static_; }  ///< not yet judged, static world
 
   /// [-] TP / (TP + FP); 1 when nothing was labelled dynamic.
