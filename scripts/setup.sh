@@ -15,6 +15,9 @@ PACKAGES=(
   libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libcv-bridge-dev libimage-transport-dev
   libpcl-conversions-dev libpcl-dev libceres-dev libcgal-dev libopencv-dev libeigen3-dev
   libyaml-cpp-dev libgtest-dev
+  libroscpp-dev libmessage-filters-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev
+  libnav-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-dev pluginlib-dev
+  ros-message-generation ros-message-runtime
   python3-rostest python3-rosbag python3-sensor-msgs python3-nav-msgs python3-geometry-msgs
   python3-visualization-msgs python3-std-srvs python3-tf2-msgs python3-tf2-ros python3-cv-bridge
   python3-numpy python3-matplotlib python3-yaml python3-opencv python3-nose
