@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "dslam/core/depth_conversion.h"
+#include "dslam/core/stamp_association.h"
 
 namespace dslam {
 namespace {
@@ -90,29 +91,13 @@ std::vector<StampedFile> ReadFileList(const std::string& path) {
 std::vector<AssociatedPair> AssociateByStamp(const std::vector<StampedFile>& colour,
                                              const std::vector<StampedFile>& depth,
                                              double max_dt_s) {
-  struct Candidate {
-    double dt;
-    size_t c, d;
-  };
-  std::vector<Candidate> candidates;
-  for (size_t c = 0; c < colour.size(); ++c) {
-    for (size_t d = 0; d < depth.size(); ++d) {
-      const double dt = std::abs(colour[c].stamp_s - depth[d].stamp_s);
-      if (dt <= max_dt_s) candidates.push_back({dt, c, d});
-    }
-  }
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Candidate& a, const Candidate& b) { return a.dt < b.dt; });
-  std::vector<bool> colour_used(colour.size(), false), depth_used(depth.size(), false);
+  std::vector<double> colour_stamps, depth_stamps;
+  for (const StampedFile& f : colour) colour_stamps.push_back(f.stamp_s);
+  for (const StampedFile& f : depth) depth_stamps.push_back(f.stamp_s);
   std::vector<AssociatedPair> pairs;
-  for (const Candidate& cand : candidates) {
-    if (colour_used[cand.c] || depth_used[cand.d]) continue;
-    colour_used[cand.c] = depth_used[cand.d] = true;
-    pairs.push_back({colour[cand.c], depth[cand.d]});
+  for (const auto& [c, d] : AssociateStamps(colour_stamps, depth_stamps, max_dt_s)) {
+    pairs.push_back({colour[c], depth[d]});
   }
-  std::sort(pairs.begin(), pairs.end(), [](const AssociatedPair& a, const AssociatedPair& b) {
-    return a.colour.stamp_s < b.colour.stamp_s;
-  });
   return pairs;
 }
 

@@ -39,13 +39,15 @@ Eigen::Isometry3d BonnMarkerToCamera() {
 }
 
 Eigen::Isometry3d BonnCameraPose(const Eigen::Isometry3d& T_world_marker) {
-  const Eigen::Matrix4d t_ros = BonnAxisChange();
+  // Constants of the correction, computed once (T_m needs an SVD).
+  static const Eigen::Matrix4d t_ros = BonnAxisChange();
+  static const Eigen::Isometry3d T_marker_camera = BonnMarkerToCamera();
   // T_ros is its own inverse: this is a change of axes on both sides, a proper rigid transform.
   const Eigen::Matrix4d conjugated = t_ros * T_world_marker.matrix() * t_ros;
   Eigen::Isometry3d T_axes_marker = Eigen::Isometry3d::Identity();
   T_axes_marker.linear() = conjugated.topLeftCorner<3, 3>();
   T_axes_marker.translation() = conjugated.topRightCorner<3, 1>();
-  return T_axes_marker * BonnMarkerToCamera();
+  return T_axes_marker * T_marker_camera;
 }
 
 Trajectory ApplyGroundTruthCorrection(const Trajectory& groundtruth,

@@ -219,9 +219,10 @@ Eigen::Matrix<double, 6, 6> PerturbationToWorldCamera(const Eigen::Isometry3d& T
   return A;
 }
 
-Eigen::Matrix<double, 6, 6> CovarianceWorldCamera(const PoseResult& result) {
-  const Matrix6d A = PerturbationToWorldCamera(result.T_camera_world);
-  const Matrix6d covariance = result.information.ldlt().solve(Matrix6d::Identity());
+Eigen::Matrix<double, 6, 6> CovarianceWorldCamera(const Matrix6d& information,
+                                                  const Eigen::Isometry3d& T_camera_world) {
+  const Matrix6d A = PerturbationToWorldCamera(T_camera_world);
+  const Matrix6d covariance = information.ldlt().solve(Matrix6d::Identity());
   return A * covariance * A.transpose();
 }
 

@@ -85,7 +85,7 @@ WalkerState WalkerStateAt(const WalkerParams& w, double t_s) {
   double cycle = 0.0, loop_length = 0.0;
   for (size_t i = 0; i < n; ++i) {
     length[i] = (w.path_m[(i + 1) % n] - w.path_m[i]).norm();
-    if (i < w.dwell_s.size()) dwell[(i + 1) % n] = w.dwell_s[(i + 1) % n];
+    if (i < w.dwell_s.size()) dwell[i] = w.dwell_s[i];
     loop_length += length[i];
   }
   for (size_t i = 0; i < n; ++i) cycle += length[i] / w.speed_mps + dwell[(i + 1) % n];

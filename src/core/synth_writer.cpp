@@ -1,7 +1,6 @@
 #include "dslam/core/synth_writer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "dslam/core/stopwatch.h"
 #include "dslam/core/synth_texture.h"
 #include "dslam/core/trajectory_io.h"
 
@@ -46,7 +46,7 @@ void WriteCameraYaml(const std::string& path, const SensorParams& s) {
 
 WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string& folder, int frames,
                            const std::function<void(int, int)>& progress) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   namespace fs = std::filesystem;
   for (const char* sub : {"rgb", "depth", "mask"}) fs::create_directories(fs::path(folder) / sub);
   const Scenario& sc = sequence.scenario();
@@ -90,7 +90,7 @@ WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string&
     if (!*out) throw std::runtime_error("error while writing the file lists in " + folder);
   }
   summary.frames = frames;
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.seconds = watch.ElapsedMs() / 1000.0;
   return summary;
 }
 

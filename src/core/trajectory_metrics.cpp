@@ -3,42 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <tuple>
+
+#include "dslam/core/stamp_association.h"
 
 namespace dslam {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
-
-struct Candidate {
-  double abs_dt_s;
-  size_t estimated_index;
-  size_t groundtruth_index;
-};
-
-// All (estimated, ground truth) pairs within max_dt_s, smallest |dt| first (ties by index).
-std::vector<Candidate> CollectCandidates(const Trajectory& estimated, const Trajectory& groundtruth,
-                                         double max_dt_s) {
-  std::vector<std::pair<double, size_t>> gt_stamps;
-  gt_stamps.reserve(groundtruth.size());
-  for (size_t g = 0; g < groundtruth.size(); ++g) gt_stamps.emplace_back(groundtruth[g].stamp_s, g);
-  std::sort(gt_stamps.begin(), gt_stamps.end());
-  std::vector<Candidate> candidates;
-  for (size_t e = 0; e < estimated.size(); ++e) {
-    const double t = estimated[e].stamp_s;
-    auto it = std::lower_bound(gt_stamps.begin(), gt_stamps.end(),
-                               std::make_pair(t - max_dt_s, size_t{0}));
-    for (; it != gt_stamps.end() && it->first <= t + max_dt_s; ++it) {
-      const double abs_dt = std::abs(it->first - t);
-      if (abs_dt <= max_dt_s) candidates.push_back({abs_dt, e, it->second});
-    }
-  }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    return std::tie(a.abs_dt_s, a.estimated_index, a.groundtruth_index) <
-           std::tie(b.abs_dt_s, b.estimated_index, b.groundtruth_index);
-  });
-  return candidates;
-}
 
 double AngleOf(const Eigen::Matrix3d& rotation) {
   return Eigen::AngleAxisd(Eigen::Quaterniond(rotation).normalized()).angle();
@@ -48,20 +19,11 @@ double AngleOf(const Eigen::Matrix3d& rotation) {
 
 PoseAssociation AssociatePoses(const Trajectory& estimated, const Trajectory& groundtruth,
                                double max_dt_s) {
-  std::vector<bool> estimated_used(estimated.size(), false);
-  std::vector<bool> groundtruth_used(groundtruth.size(), false);
-  std::vector<std::pair<size_t, size_t>> matches;
-  for (const Candidate& c : CollectCandidates(estimated, groundtruth, max_dt_s)) {
-    if (estimated_used[c.estimated_index] || groundtruth_used[c.groundtruth_index]) continue;
-    estimated_used[c.estimated_index] = true;
-    groundtruth_used[c.groundtruth_index] = true;
-    matches.emplace_back(c.estimated_index, c.groundtruth_index);
-  }
-  std::sort(matches.begin(), matches.end(), [&](const auto& a, const auto& b) {
-    return estimated[a.first].stamp_s < estimated[b.first].stamp_s;
-  });
+  std::vector<double> estimated_stamps, groundtruth_stamps;
+  for (const StampedPose& p : estimated) estimated_stamps.push_back(p.stamp_s);
+  for (const StampedPose& p : groundtruth) groundtruth_stamps.push_back(p.stamp_s);
   PoseAssociation association;
-  for (const auto& [e, g] : matches) {
+  for (const auto& [e, g] : AssociateStamps(estimated_stamps, groundtruth_stamps, max_dt_s)) {
     association.estimated.push_back(estimated[e]);
     association.groundtruth.push_back(groundtruth[g]);
   }

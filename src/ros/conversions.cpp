@@ -92,8 +92,7 @@ Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& in
     return unknown_variance * Matrix6d::Identity();
   }
   // Covariance of [dp; dtheta] of T_world_camera (left perturbation in the world frame).
-  const Matrix6d A = PerturbationToWorldCamera(T_world_camera.inverse());
-  const Matrix6d cov_world_camera = A * ldlt.solve(Matrix6d::Identity()) * A.transpose();
+  const Matrix6d cov_world_camera = CovarianceWorldCamera(information, T_world_camera.inverse());
   // T_odom_base = T_bc T_wc T_cb: dp_ob = R_bc (dp - [R_wc t_cb]x dtheta), dtheta_o = R_bc dtheta.
   const Eigen::Matrix3d R_bc = T_base_camera.rotation();
   const Eigen::Vector3d lever = T_world_camera.rotation() * T_base_camera.inverse().translation();

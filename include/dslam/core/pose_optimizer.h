@@ -67,8 +67,15 @@ double SquaredError(const PoseObservation& observation, const Eigen::Isometry3d&
 /// frame, rotation about the fixed world axes, nav_msgs/Odometry covariance order).
 Eigen::Matrix<double, 6, 6> PerturbationToWorldCamera(const Eigen::Isometry3d& T_camera_world);
 
-/// Covariance [m^2, rad^2] of T_world_camera in ROS order [x y z rx ry rz] from the result's
-/// information: A info^-1 A^T with A = PerturbationToWorldCamera(). Requires success.
-Eigen::Matrix<double, 6, 6> CovarianceWorldCamera(const PoseResult& result);
+/// Covariance [m^2, rad^2] of T_world_camera in ROS order [x y z rx ry rz] from the information
+/// of T_camera_world (PoseResult::information): A info^-1 A^T with A =
+/// PerturbationToWorldCamera(). The information must be positive definite.
+Eigen::Matrix<double, 6, 6> CovarianceWorldCamera(const Eigen::Matrix<double, 6, 6>& information,
+                                                  const Eigen::Isometry3d& T_camera_world);
+
+/// CovarianceWorldCamera() of a successful result.
+inline Eigen::Matrix<double, 6, 6> CovarianceWorldCamera(const PoseResult& result) {
+  return CovarianceWorldCamera(result.information, result.T_camera_world);
+}
 
 }  // namespace dslam
