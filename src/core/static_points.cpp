@@ -1,16 +1,11 @@
 #include "dslam/core/static_points.h"
 
 #include <algorithm>
-#include <chrono>
+
+#include "dslam/core/stopwatch.h"
 
 namespace dslam {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double MsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 CullingResult RunCulling(const CorrelationInput& input, const std::vector<GraphEdge>& edges,
                          const StaticPointsConfig& config) {
@@ -69,17 +64,16 @@ void RequireEvidenceAgainstStatic(const std::vector<GraphEdge>& edges,
 StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
                                          const StaticPointsConfig& config) {
   StaticPointsResult result;
-  const auto start = Clock::now();
+  const Stopwatch total;
+  Stopwatch stage;
   result.edges = BuildDelaunayGraph(input.points_world);
-  result.stats.graph_ms = MsSince(start);
+  result.stats.graph_ms = stage.Restart();
 
-  const auto culling_start = Clock::now();
   CullingResult culling = RunCulling(input, result.edges, config);
   result.edge_kept = std::move(culling.edge_kept);
   result.points_world = std::move(culling.points_world);
-  result.stats.culling_ms = MsSince(culling_start);
+  result.stats.culling_ms = stage.Restart();
 
-  const auto components_start = Clock::now();
   const int num_points = static_cast<int>(input.points_world.size());
   // Only edges that were tested (measured in enough frames) and passed connect points: an
   // untested edge between a new point on a walking person and the wall behind it would otherwise
@@ -109,8 +103,8 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
   }
   result.static_component = selection.static_component;
   result.ambiguous = selection.ambiguous;
-  result.stats.components_ms = MsSince(components_start);
-  result.stats.total_ms = MsSince(start);
+  result.stats.components_ms = stage.Restart();
+  result.stats.total_ms = total.ElapsedMs();
 
   result.stats.points = num_points;
   result.stats.edges = static_cast<int>(result.edges.size());

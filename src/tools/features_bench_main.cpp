@@ -3,7 +3,6 @@
 // Usage: dslam_features_bench [repetitions=30]
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -15,15 +14,10 @@
 
 #include "dslam/core/features.h"
 #include "dslam/core/pose_optimizer.h"
+#include "dslam/core/run_statistics.h"
+#include "dslam/core/stopwatch.h"
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 dslam::RgbdFrame TexturedFrame(std::mt19937* rng) {
   std::uniform_int_distribution<int> grey(0, 255);
@@ -72,9 +66,9 @@ int main(int argc, char** argv) {
   std::vector<double> extract_ms, ba_ms;
   size_t num_features = 0;
   for (int i = 0; i < reps; ++i) {
-    const auto t0 = Clock::now();
+    const dslam::Stopwatch watch;
     num_features = dslam::ExtractFeatures(frame, {}, {}).features.size();
-    extract_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    extract_ms.push_back(watch.ElapsedMs());
   }
   const Eigen::Isometry3d T_cw(Eigen::Translation3d(0.1, 0.0, 0.2) *
                                Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
@@ -82,13 +76,13 @@ int main(int argc, char** argv) {
   const Eigen::Isometry3d guess = Eigen::Translation3d(0.03, 0.02, -0.03) * T_cw;
   int inliers = 0;
   for (int i = 0; i < reps; ++i) {
-    const auto t0 = Clock::now();
+    const dslam::Stopwatch watch;
     inliers = dslam::EstimatePose(obs, guess, *frame.camera, {}).num_inliers;
-    ba_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    ba_ms.push_back(watch.ElapsedMs());
   }
   std::printf("ORB extraction 640x480: %zu features, median %.2f ms over %d runs\n", num_features,
-              Median(extract_ms), reps);
+              dslam::Median(extract_ms), reps);
   std::printf("motion-only BA, 300 correspondences (%d inliers): median %.2f ms over %d runs\n",
-              inliers, Median(ba_ms), reps);
+              inliers, dslam::Median(ba_ms), reps);
   return 0;
 }

@@ -1,21 +1,16 @@
 // dslam_spd_bench: median runtime of DetermineStaticPoints on synthetic scenes (a room with a
 // moving cluster, see synthetic_scene.h) for a few problem sizes and frame counts.
 // Usage: dslam_spd_bench [repetitions=50] [method=least_squares|direct]
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "dslam/core/run_statistics.h"
 #include "dslam/core/static_points.h"
 #include "dslam/core/synthetic_scene.h"
 
 namespace {
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 void Bench(int points, int frames, int repetitions, const dslam::StaticPointsConfig& config) {
   dslam::SyntheticSceneOptions o;
@@ -33,8 +28,8 @@ void Bench(int points, int frames, int repetitions, const dslam::StaticPointsCon
     components.push_back(last.components_ms);
   }
   std::printf("| %5d | %2d | %6d | %5d | %3d | %7.3f | %7.3f | %7.3f | %7.3f |\n", points, frames,
-              last.edges, last.culled_edges, last.rounds, Median(total), Median(graph),
-              Median(culling), Median(components));
+              last.edges, last.culled_edges, last.rounds, dslam::Median(total), dslam::Median(graph),
+              dslam::Median(culling), dslam::Median(components));
 }
 
 }  // namespace
