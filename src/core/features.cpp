@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -36,30 +37,44 @@ std::vector<int> LevelShares(const FeaturesConfig& config) {
   return shares;
 }
 
-// FAST per cell (threshold fallback in empty cells); one vector per cell, strongest first.
-std::vector<std::vector<cv::KeyPoint>> DetectPerCell(const cv::Mat& level,
+// FAST in each cell of the cell row starting at y `cy` (threshold fallback in empty cells); one
+// vector per non-empty cell, strongest first.
+std::vector<std::vector<cv::KeyPoint>> DetectCellRow(const cv::Mat& level, int cy,
                                                      const FeaturesConfig& config) {
-  const int x0 = kEdgeThreshold, y0 = kEdgeThreshold;
-  const int x1 = level.cols - kEdgeThreshold, y1 = level.rows - kEdgeThreshold;
-  std::vector<std::vector<cv::KeyPoint>> cells;
-  if (x1 - x0 < 2 * kFastMargin || y1 - y0 < 2 * kFastMargin) return cells;
+  const int x0 = kEdgeThreshold, x1 = level.cols - kEdgeThreshold;
+  const int y1 = level.rows - kEdgeThreshold;
   const int size = config.cell_size_px;
-  for (int cy = y0; cy < y1; cy += size) {
-    for (int cx = x0; cx < x1; cx += size) {
-      const int w = std::min(size, x1 - cx), h = std::min(size, y1 - cy);
-      const cv::Rect roi(cx - kFastMargin, cy - kFastMargin, w + 2 * kFastMargin,
-                         h + 2 * kFastMargin);
-      std::vector<cv::KeyPoint> found;
-      cv::FAST(level(roi), found, config.fast_threshold, true);
-      if (found.empty()) cv::FAST(level(roi), found, config.fast_threshold_min, true);
-      for (cv::KeyPoint& kp : found) kp.pt += cv::Point2f(roi.x, roi.y);
-      std::sort(found.begin(), found.end(), [](const cv::KeyPoint& a, const cv::KeyPoint& b) {
-        return a.response > b.response;
-      });
-      if (!found.empty()) cells.push_back(std::move(found));
-    }
+  std::vector<std::vector<cv::KeyPoint>> cells;
+  for (int cx = x0; cx < x1; cx += size) {
+    const int w = std::min(size, x1 - cx), h = std::min(size, y1 - cy);
+    const cv::Rect roi(cx - kFastMargin, cy - kFastMargin, w + 2 * kFastMargin,
+                       h + 2 * kFastMargin);
+    std::vector<cv::KeyPoint> found;
+    cv::FAST(level(roi), found, config.fast_threshold, true);
+    if (found.empty()) cv::FAST(level(roi), found, config.fast_threshold_min, true);
+    for (cv::KeyPoint& kp : found) kp.pt += cv::Point2f(roi.x, roi.y);
+    std::sort(found.begin(), found.end(),
+              [](const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; });
+    if (!found.empty()) cells.push_back(std::move(found));
   }
   return cells;
+}
+
+// One unit of detection work: a cell row of one pyramid level.
+struct CellRowJob {
+  int level = 0;
+  int cy = 0;  ///< [px] top of the cell row at that level
+};
+
+std::vector<CellRowJob> CellRowJobs(const std::vector<cv::Mat>& levels,
+                                    const FeaturesConfig& config) {
+  std::vector<CellRowJob> jobs;
+  for (int l = 0; l < static_cast<int>(levels.size()); ++l) {
+    const int x1 = levels[l].cols - kEdgeThreshold, y1 = levels[l].rows - kEdgeThreshold;
+    if (x1 - kEdgeThreshold < 2 * kFastMargin || y1 - kEdgeThreshold < 2 * kFastMargin) continue;
+    for (int cy = kEdgeThreshold; cy < y1; cy += config.cell_size_px) jobs.push_back({l, cy});
+  }
+  return jobs;
 }
 
 // Round-robin over cells, strongest first within a round; at most `share` keypoints.
@@ -119,24 +134,49 @@ std::vector<cv::KeyPoint> DetectDistributedKeypoints(const cv::Mat& grey,
                                                      const FeaturesConfig& config) {
   const std::vector<double> scales = LevelScales(config);
   const std::vector<int> shares = LevelShares(config);
+  std::vector<cv::Mat> levels(config.num_levels);
+  cv::parallel_for_(cv::Range(0, config.num_levels), [&](const cv::Range& range) {
+    for (int l = range.start; l < range.end; ++l) {
+      const cv::Size size(cvRound(grey.cols / scales[l]), cvRound(grey.rows / scales[l]));
+      if (l == 0)
+        levels[l] = grey;
+      else
+        cv::resize(grey, levels[l], size, 0, 0, cv::INTER_LINEAR_EXACT);
+    }
+  });
+  // FAST per cell row of every level, in parallel; results are stored by job, so the keypoints
+  // (and their order) do not depend on the number of threads.
+  const std::vector<CellRowJob> jobs = CellRowJobs(levels, config);
+  std::vector<std::vector<std::vector<cv::KeyPoint>>> rows(jobs.size());
+  cv::parallel_for_(cv::Range(0, static_cast<int>(jobs.size())), [&](const cv::Range& range) {
+    for (int j = range.start; j < range.end; ++j) {
+      rows[j] = DetectCellRow(levels[jobs[j].level], jobs[j].cy, config);
+    }
+  });
   std::vector<cv::KeyPoint> all;
   int carry = 0;
+  size_t job = 0;
   for (int l = 0; l < config.num_levels; ++l) {
-    cv::Mat level = grey;
-    if (l > 0) {
-      const cv::Size size(cvRound(grey.cols / scales[l]), cvRound(grey.rows / scales[l]));
-      cv::resize(grey, level, size, 0, 0, cv::INTER_LINEAR_EXACT);
+    std::vector<std::vector<cv::KeyPoint>> cells;
+    for (; job < jobs.size() && jobs[job].level == l; ++job) {
+      for (auto& cell : rows[job]) cells.push_back(std::move(cell));
     }
     const int share = shares[l] + carry;
-    std::vector<cv::KeyPoint> kept = Distribute(DetectPerCell(level, config), share);
+    std::vector<cv::KeyPoint> kept = Distribute(cells, share);
     carry = share - static_cast<int>(kept.size());
+    const size_t first = all.size();
     for (cv::KeyPoint& kp : kept) {
-      kp.angle = IntensityCentroidAngle(level, kp.pt);
       kp.octave = l;
       kp.size = static_cast<float>(2 * kPatchRadius + 1) * static_cast<float>(scales[l]);
-      kp.pt *= static_cast<float>(scales[l]);
       all.push_back(kp);
     }
+    cv::parallel_for_(cv::Range(static_cast<int>(first), static_cast<int>(all.size())),
+                      [&](const cv::Range& range) {
+                        for (int k = range.start; k < range.end; ++k) {
+                          all[k].angle = IntensityCentroidAngle(levels[l], all[k].pt);
+                          all[k].pt *= static_cast<float>(scales[l]);
+                        }
+                      });
   }
   return all;
 }
