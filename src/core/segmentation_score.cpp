@@ -38,6 +38,16 @@ void SegmentationScore::Add(const std::vector<ObservedPoint>& points, const cv::
   }
 }
 
+void SegmentationScore::Merge(const SegmentationScore& other) {
+  tp_ += other.tp_;
+  fp_ += other.fp_;
+  fn_ += other.fn_;
+  tn_ += other.tn_;
+  skipped_ += other.skipped_;
+  cand_dyn_ += other.cand_dyn_;
+  cand_static_ += other.cand_static_;
+}
+
 double SegmentationScore::Precision() const { return Ratio(tp_, tp_ + fp_); }
 double SegmentationScore::Recall() const { return Ratio(tp_, tp_ + fn_); }
 double SegmentationScore::FalseDynamicRate() const {

@@ -22,7 +22,7 @@
 namespace {
 
 struct Args {
-  std::string dataset, camera, trajectory, status, config, summary;
+  std::string dataset, camera, trajectory, status, config, summary, segmentation;
   std::string static_points;  ///< "on", "off" or empty (the config's static_points.enabled)
   int max_frames = -1;
   bool quiet = false;
@@ -33,7 +33,8 @@ int Usage() {
                "camera.yaml]\n"
                "                         [--status OUT.csv] [--static-points on|off] "
                "[--config params.yaml]\n"
-               "                         [--summary OUT.json] [--max-frames N] [--quiet]\n";
+               "                         [--summary OUT.json] [--segmentation OUT.csv] "
+               "[--max-frames N] [--quiet]\n";
   return 2;
 }
 
@@ -58,6 +59,8 @@ bool Parse(int argc, char** argv, Args* args) {
       args->config = value;
     else if (key == "--summary")
       args->summary = value;
+    else if (key == "--segmentation")
+      args->segmentation = value;
     else if (key == "--max-frames")
       args->max_frames = std::stoi(value);
     else if (key == "--static-points" && (value == "on" || value == "off"))
@@ -91,6 +94,13 @@ void Progress(size_t done, size_t total, const dslam::FrameResult& r) {
   std::fprintf(stderr, "\r[%s%s] %zu/%zu %-11s %5.1f ms", std::string(filled, '#').c_str(),
                std::string(width - filled, ' ').c_str(), done, total, ToString(r.state),
                r.times.total_ms);
+}
+
+// One frame's confusion counts (--segmentation).
+void WriteSegmentationRow(int frame, const dslam::SegmentationScore& s, std::ofstream* out) {
+  *out << frame << ',' << s.true_dynamic() << ',' << s.false_dynamic() << ',' << s.missed_dynamic()
+       << ',' << s.true_static() << ',' << s.candidates_on_dynamic() << ','
+       << s.candidates_on_static() << '\n';
 }
 
 // The run's numbers as JSON (benchmark scripts read it).
@@ -132,10 +142,15 @@ int Run(const Args& args) {
   dslam::Trajectory trajectory;
   dslam::RunSummary summary;
   dslam::SegmentationScore score;
-  std::ofstream status;
+  std::ofstream status, segmentation;
   if (!args.status.empty()) {
     status.open(args.status);
     status << dslam::StatusCsvHeader() << "\n";
+  }
+  if (!args.segmentation.empty() && !masks.empty()) {
+    segmentation.open(args.segmentation);
+    segmentation << "frame,true_dynamic,false_dynamic,missed_dynamic,true_static,"
+                    "candidates_on_dynamic,candidates_on_static\n";
   }
   const size_t n =
       args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
@@ -146,7 +161,10 @@ int Run(const Args& args) {
     if (status) status << dslam::StatusCsvRow(r) << "\n";
     const auto mask = masks.find(r.stamp_s);
     if (mask != masks.end()) {
-      score.Add(r.points, cv::imread(args.dataset + "/" + mask->second, cv::IMREAD_ANYDEPTH));
+      dslam::SegmentationScore frame_score;
+      frame_score.Add(r.points, cv::imread(args.dataset + "/" + mask->second, cv::IMREAD_ANYDEPTH));
+      score.Merge(frame_score);
+      if (segmentation) WriteSegmentationRow(r.frame_index, frame_score, &segmentation);
     }
     if (!args.quiet) Progress(i + 1, n, r);
   }

@@ -37,5 +37,20 @@ TEST(SegmentationScore, CountsConfusionAndSkipsMaskEdges) {
   EXPECT_DOUBLE_EQ(score.FalseDynamicRate(), 0.5);
 }
 
+TEST(SegmentationScore, MergeAddsEveryCount) {
+  cv::Mat mask(40, 40, CV_16UC1, cv::Scalar(0));
+  mask(cv::Rect(20, 0, 20, 40)).setTo(1);
+  SegmentationScore first, second, both;
+  first.Add({At(5, 5, true), At(30, 10, false)}, mask);
+  second.Add({At(6, 30, false), At(33, 33, true), At(0, 0, true)}, mask);
+  both.Merge(first);
+  both.Merge(second);
+  EXPECT_EQ(both.true_static(), 1);
+  EXPECT_EQ(both.true_dynamic(), 1);
+  EXPECT_EQ(both.false_dynamic(), 1);
+  EXPECT_EQ(both.missed_dynamic(), 1);
+  EXPECT_EQ(both.skipped(), 1);
+}
+
 }  // namespace
 }  // namespace dslam

@@ -23,6 +23,9 @@ class SegmentationScore {
   /// indexed by the raw pixel of each point.
   void Add(const std::vector<ObservedPoint>& points, const cv::Mat& mask);
 
+  /// Adds another score's counts (e.g. one frame's score to the run's).
+  void Merge(const SegmentationScore& other);
+
   long true_dynamic() const { return tp_; }    ///< labelled dynamic, on a moving object
   long false_dynamic() const { return fp_; }   ///< labelled dynamic, on the static world
   long missed_dynamic() const { return fn_; }  ///< labelled static, on a moving object
