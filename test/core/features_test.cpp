@@ -4,6 +4,7 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "synthetic_scene.h"
@@ -32,6 +33,24 @@ TEST(Features, NearRequestedCountSpreadOverImage) {
   }
   for (int l = 0; l < config.num_levels; ++l) EXPECT_GT(per_octave[l], 0) << "octave " << l;
   EXPECT_DOUBLE_EQ(ff.octave_scale[2], 1.2 * 1.2);
+}
+
+TEST(Features, SameKeypointsWithOneOrSeveralThreads) {
+  const RgbdFrame frame = test::TexturedFrame(test::TestCamera(), 2, 2.0);
+  cv::Mat grey = frame.colour;
+  if (grey.channels() == 3) cv::cvtColor(frame.colour, grey, cv::COLOR_BGR2GRAY);
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  const std::vector<cv::KeyPoint> one = DetectDistributedKeypoints(grey, FeaturesConfig());
+  cv::setNumThreads(4);
+  const std::vector<cv::KeyPoint> several = DetectDistributedKeypoints(grey, FeaturesConfig());
+  cv::setNumThreads(threads);
+  ASSERT_EQ(one.size(), several.size());
+  for (size_t k = 0; k < one.size(); ++k) {
+    EXPECT_EQ(one[k].pt, several[k].pt) << k;
+    EXPECT_EQ(one[k].angle, several[k].angle) << k;
+    EXPECT_EQ(one[k].octave, several[k].octave) << k;
+  }
 }
 
 TEST(Features, WeakCellsUseFallbackThreshold) {
