@@ -1,6 +1,7 @@
 // dslam_features_bench: median runtime of ORB extraction (640x480, synthetic texture with depth)
-// and of the motion-only BA with 300 RGB-D correspondences (20% outliers), single thread.
-// Usage: dslam_features_bench [repetitions=30]
+// and of the motion-only BA with 300 RGB-D correspondences (20% outliers). OpenCV's thread count
+// (feature detection runs in parallel) is the second argument; the BA is single-threaded.
+// Usage: dslam_features_bench [repetitions=30] [threads=1]
 
 #include <algorithm>
 #include <cstdio>
@@ -60,7 +61,8 @@ std::vector<dslam::PoseObservation> Observations(const dslam::PinholeCamera& cam
 
 int main(int argc, char** argv) {
   const int reps = argc > 1 ? std::max(1, std::atoi(argv[1])) : 30;
-  cv::setNumThreads(1);
+  const int threads = argc > 2 ? std::max(1, std::atoi(argv[2])) : 1;
+  cv::setNumThreads(threads);
   std::mt19937 rng(1);
   const dslam::RgbdFrame frame = TexturedFrame(&rng);
   std::vector<double> extract_ms, ba_ms;
@@ -80,8 +82,8 @@ int main(int argc, char** argv) {
     inliers = dslam::EstimatePose(obs, guess, *frame.camera, {}).num_inliers;
     ba_ms.push_back(watch.ElapsedMs());
   }
-  std::printf("ORB extraction 640x480: %zu features, median %.2f ms over %d runs\n", num_features,
-              dslam::Median(extract_ms), reps);
+  std::printf("ORB extraction 640x480: %zu features, median %.2f ms over %d runs (%d thread%s)\n",
+              num_features, dslam::Median(extract_ms), reps, threads, threads == 1 ? "" : "s");
   std::printf("motion-only BA, 300 correspondences (%d inliers): median %.2f ms over %d runs\n",
               inliers, dslam::Median(ba_ms), reps);
   return 0;
