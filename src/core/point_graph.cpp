@@ -1,6 +1,7 @@
 #include "dslam/core/point_graph.h"
 
 #include <algorithm>
+#include <iterator>
 #include <utility>
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -33,12 +34,18 @@ std::vector<GraphEdge> BuildDelaunayGraph(const std::vector<Eigen::Vector3d>& po
   // keeps the info of the first one inserted, which is not necessarily the smallest index.
   Delaunay triangulation(input.begin(), input.end());
 
+  // Each vertex's finite neighbours, every edge once (from its smaller-index end): cheaper than
+  // finite_edges_begin(), which circulates around each edge to visit it once.
   std::vector<GraphEdge> edges;
   edges.reserve(triangulation.number_of_vertices() * 8);
-  for (auto e = triangulation.finite_edges_begin(); e != triangulation.finite_edges_end(); ++e) {
-    const int a = e->first->vertex(e->second)->info();
-    const int b = e->first->vertex(e->third)->info();
-    edges.push_back(MakeEdge(a, b));
+  std::vector<Delaunay::Vertex_handle> neighbours;
+  for (auto v = triangulation.finite_vertices_begin(); v != triangulation.finite_vertices_end();
+       ++v) {
+    neighbours.clear();
+    triangulation.finite_adjacent_vertices(v, std::back_inserter(neighbours));
+    for (const auto& w : neighbours) {
+      if (v->info() < w->info()) edges.push_back(GraphEdge{v->info(), w->info()});
+    }
   }
   // Duplicates: connect each input point that did not become a vertex to the vertex at its place.
   if (triangulation.number_of_vertices() < input.size()) {
