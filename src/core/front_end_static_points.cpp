@@ -1,5 +1,7 @@
 #include "dslam/core/front_end_static_points.h"
 
+#include <algorithm>
+
 namespace dslam {
 namespace {
 
@@ -50,9 +52,8 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
 }
 
 std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
-                                    const std::vector<PointMatch>& matches,
-                                    int isolated_frames_to_unmark, int frame_index,
-                                    int verify_frames, Map* map) {
+                                    const std::vector<PointMatch>& matches, const LabelRules& rules,
+                                    int frame_index, Map* map) {
   std::vector<bool> excluded(matches.size(), false);
   if (!front_end.ran || front_end.result.static_component < 0) return excluded;
   for (size_t g = 0; g < front_end.graph_match.size(); ++g) {
@@ -62,17 +63,29 @@ std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
     switch (front_end.result.labels[g]) {
       case PointLabel::kStatic:
         point->isolated_frames = 0;
-        point->marked = true;  // consistent with the static world again (e.g. wrongly unmarked)
-        if (frame_index - point->created_frame >= verify_frames) point->candidate = false;
+        // Consistent with the static world again (e.g. wrongly unmarked, or stopped moving).
+        // The longer a point was seen moving, the longer it must look static again (up to
+        // remark_frames): a static point unmarked by one bad frame comes back at once.
+        if (!point->marked &&
+            ++point->static_streak >= std::min(rules.remark_frames, point->dynamic_frames)) {
+          point->marked = true;
+          point->dynamic_frames = 0;
+        }
+        if (point->marked && frame_index - point->created_frame >= rules.verify_frames) {
+          point->candidate = false;
+        }
         break;
       case PointLabel::kDynamic:
         point->marked = false;
+        point->static_streak = 0;
+        ++point->dynamic_frames;
         point->candidate = false;
         excluded[m] = true;
         break;
       case PointLabel::kIsolated:
         excluded[m] = true;
-        if (++point->isolated_frames >= isolated_frames_to_unmark) point->marked = false;
+        point->static_streak = 0;
+        if (++point->isolated_frames >= rules.isolated_frames_to_unmark) point->marked = false;
         break;
       case PointLabel::kUndecided:
       case PointLabel::kUnverified:

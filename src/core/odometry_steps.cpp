@@ -96,9 +96,10 @@ void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
   current->static_points = DetermineStaticPointsFrontEnd(
       map_, current->matches, current->features, current->T_camera_world, FrontEndReferenceFrames(),
       config_.static_points);
-  current->excluded = ApplyStaticLabels(current->static_points, current->matches,
-                                        config_.tracking.isolated_frames_to_unmark,
-                                        result->frame_index, config_.tracking.verify_frames, &map_);
+  const TrackingConfig& cfg = config_.tracking;
+  const LabelRules rules{cfg.isolated_frames_to_unmark, cfg.verify_frames, cfg.remark_frames};
+  current->excluded = ApplyStaticLabels(current->static_points, current->matches, rules,
+                                        result->frame_index, &map_);
   const StaticPointsStats& stats = current->static_points.result.stats;
   result->counts.graph_points = stats.points;
   result->counts.graph_edges = stats.edges;

@@ -39,17 +39,25 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
     const std::vector<const FrameMeasurements*>& reference_frames,
     const StaticPointsConfig& config);
 
+/// How labels turn into marks (from TrackingConfig).
+struct LabelRules {
+  int isolated_frames_to_unmark = 3;  ///< [frames] isolated this often in a row: unmarked
+  int verify_frames = 6;              ///< [frames] a candidate is verified once static this late
+  int remark_frames = 15;             ///< [frames] at most this many static frames to re-mark
+};
+
 /// Applies the labels (nothing changes when no static component was chosen):
 /// - dynamic (a member of another component: a group of points that moved together) -> unmarked;
 /// - isolated (every edge inconsistent): most often a false match rather than a moving point, so
 ///   the match is only excluded from this frame's pose; a point isolated in
-///   `isolated_frames_to_unmark` consecutive frames is unmarked;
-/// - static -> marked, its isolation count cleared; a candidate (new point) becomes verified
-///   once it is static at least `verify_frames` after its creation (frame `frame_index` now).
+///   `rules.isolated_frames_to_unmark` consecutive frames is unmarked;
+/// - static -> isolation count cleared; an unmarked point is marked again once it was static in
+///   as many consecutive frames as it had been labelled dynamic, at most `rules.remark_frames`;
+///   a marked candidate (new point) becomes verified once it is static at least
+///   `rules.verify_frames` after its creation (frame `frame_index` now).
 /// Returns, parallel to `matches`, whether each match must stay out of the pose.
 std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
-                                    const std::vector<PointMatch>& matches,
-                                    int isolated_frames_to_unmark, int frame_index,
-                                    int verify_frames, Map* map);
+                                    const std::vector<PointMatch>& matches, const LabelRules& rules,
+                                    int frame_index, Map* map);
 
 }  // namespace dslam

@@ -36,6 +36,8 @@ struct MapPoint {
   int times_visible = 0;    ///< frames where it projected into the image
   int times_found = 0;      ///< frames where it was matched
   int isolated_frames = 0;  ///< consecutive frames in which all its graph edges were inconsistent
+  int static_streak = 0;    ///< unmarked point: consecutive frames the front end found it static
+  int dynamic_frames = 0;   ///< frames labelled dynamic since it was last marked
 };
 
 /// RGB-D measurements of map points in one frame, with that frame's pose: the raw material of

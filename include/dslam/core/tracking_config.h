@@ -39,6 +39,11 @@ struct TrackingConfig {
   /// 0: new points are trusted at once (the paper: new points start marked).
   int verify_frames = 6;
   int isolated_frames_to_unmark = 3;  ///< [frames] isolated this often in a row: unmarked
+  /// [frames] an unmarked point is marked static again only after the front end found it static
+  /// in as many frames in a row as it had been labelled dynamic, but at most this many (a person
+  /// who stops is not trusted at once; a static point unmarked by one bad frame is back after
+  /// one). 1: at once (before this rule).
+  int remark_frames = 15;
   int lost_frames_before_reset = 10;  ///< [frames] lost this long: re-initialise at last pose
 
   template <typename Self, typename Visitor>
@@ -135,6 +140,13 @@ struct TrackingConfig {
                 "unmarked (once: probably a false match, only left out of that frame's pose)",
                 {}},
       s.isolated_frames_to_unmark);
+    v(FieldInfo{"remark_frames",
+                "frames",
+                1,
+                100000,
+                "static frames in a row an unmarked point needs (its dynamic frames, at most this)",
+                {}},
+      s.remark_frames);
     v(FieldInfo{"lost_frames_before_reset",
                 "frames",
                 1,
