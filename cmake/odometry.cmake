@@ -18,7 +18,8 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(test_odometry
     ${CMAKE_CURRENT_SOURCE_DIR}/test/core/motion_model_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/test/core/segmentation_score_test.cpp
-    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/static_labels_test.cpp)
+    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/static_labels_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/test/core/map_point_creation_test.cpp)
   target_link_libraries(test_odometry dslam_core gtest_main)
 endif()
 

@@ -4,34 +4,47 @@
 
 namespace dslam {
 
-std::vector<bool> DynamicNeighbourhood(const FrameFeatures& features,
-                                       const std::vector<PointMatch>& matches, const Map& map,
-                                       double radius_px) {
+std::vector<int> DynamicNeighbourhood(const FrameFeatures& features,
+                                      const std::vector<PointMatch>& matches, const Map& map,
+                                      double radius_px) {
   struct Neighbour {
     Eigen::Vector2d uv;
     bool marked;
+    int dynamic_frames;
   };
   std::vector<Neighbour> neighbours;
   for (const PointMatch& match : matches) {
     const MapPoint* point = map.Find(match.id);
-    if (point) neighbours.push_back({features.features[match.feature].uv_ideal, point->marked});
+    if (point) {
+      neighbours.push_back(
+          {features.features[match.feature].uv_ideal, point->marked, point->dynamic_frames});
+    }
   }
   const double r2 = radius_px * radius_px;
-  std::vector<bool> dynamic(features.features.size(), false);
+  std::vector<int> inherited(features.features.size(), -1);
+  std::vector<int> unmarked_frames;
   for (size_t f = 0; f < features.features.size(); ++f) {
-    int marked = 0, unmarked = 0;
+    int marked = 0;
+    unmarked_frames.clear();
     for (const Neighbour& n : neighbours) {
       if ((n.uv - features.features[f].uv_ideal).squaredNorm() > r2) continue;
-      (n.marked ? marked : unmarked)++;
+      if (n.marked) {
+        ++marked;
+      } else {
+        unmarked_frames.push_back(n.dynamic_frames);
+      }
     }
-    dynamic[f] = unmarked > marked;
+    if (static_cast<int>(unmarked_frames.size()) <= marked) continue;
+    auto mid = unmarked_frames.begin() + unmarked_frames.size() / 2;
+    std::nth_element(unmarked_frames.begin(), mid, unmarked_frames.end());
+    inherited[f] = *mid;
   }
-  return dynamic;
+  return inherited;
 }
 
 std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
                                      const std::vector<bool>& feature_taken,
-                                     const std::vector<bool>& dynamic_neighbourhood,
+                                     const std::vector<int>& dynamic_neighbourhood,
                                      const CreationContext& context, const TrackingConfig& config,
                                      Map* map) {
   std::vector<int> candidates;
@@ -56,7 +69,8 @@ std::vector<PointId> CreateMapPoints(const FrameFeatures& features,
     point.octave = feature.octave;
     point.created_feature = f;
     point.reference_distance_m = feature.measurement->y_camera.norm();
-    point.marked = !dynamic_neighbourhood[f];
+    point.marked = dynamic_neighbourhood[f] < 0;
+    point.dynamic_frames = std::max(0, dynamic_neighbourhood[f]);
     point.candidate = point.marked && context.new_points_are_candidates;
     point.keyframe_id = context.keyframe_id;
     point.created_frame = point.last_seen_frame = context.frame_index;

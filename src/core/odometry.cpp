@@ -102,8 +102,9 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   CreationContext context{motion_.last_pose(), result.frame_index, 0,
                           config_.static_points.enabled && config_.tracking.verify_frames > 0};
   const std::vector<bool> none(current->features.features.size(), false);
+  const std::vector<int> static_neighbourhood(current->features.features.size(), -1);
   const std::vector<PointId> ids =
-      CreateMapPoints(current->features, none, none, context, create, &map_);
+      CreateMapPoints(current->features, none, static_neighbourhood, context, create, &map_);
   KeyFrame keyframe;
   keyframe.frame_index = result.frame_index;
   keyframe.stamp_s = result.stamp_s;

@@ -182,10 +182,10 @@ int Odometry::MakeKeyFrame(const Current& current) {
   const TrackingConfig& cfg = config_.tracking;
   if (cfg.fuse_static_points) FuseStaticPoints(current);
   const int frame_index = frame_index_ - 1;
-  const std::vector<bool> dynamic =
-      config_.static_points.enabled ? DynamicNeighbourhood(current.features, current.matches, map_,
-                                                           cfg.dynamic_neighbour_radius_px)
-                                    : std::vector<bool>(current.features.features.size(), false);
+  const std::vector<int> dynamic = config_.static_points.enabled
+                                       ? DynamicNeighbourhood(current.features, current.matches,
+                                                              map_, cfg.dynamic_neighbour_radius_px)
+                                       : std::vector<int>(current.features.features.size(), -1);
   CreationContext context{current.T_camera_world.inverse(), frame_index,
                           map_.keyframes().empty() ? 0 : map_.keyframes().back().id + 1,
                           config_.static_points.enabled && cfg.verify_frames > 0};
