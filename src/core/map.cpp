@@ -1,8 +1,14 @@
 #include "dslam/core/map.h"
 
+#include <algorithm>
 #include <unordered_set>
 
 namespace dslam {
+namespace {
+
+bool IsVerifiedStatic(const MapPoint& p) { return p.marked && !p.candidate; }
+
+}  // namespace
 
 PointId Map::AddPoint(MapPoint point) {
   point.id = next_point_id_++;
@@ -30,7 +36,8 @@ const KeyFrame& Map::AddKeyFrame(KeyFrame keyframe, int max_keyframes) {
   return keyframes_.back();
 }
 
-std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra) const {
+std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
+                                      int static_seen_since_frame) const {
   std::unordered_set<PointId> seen;
   std::vector<PointId> local;
   auto add = [&](PointId id) {
@@ -40,16 +47,24 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra) const {
     for (PointId id : kf.points) add(id);
   }
   for (PointId id : extra) add(id);
+  if (static_seen_since_frame < 0) return local;
+  for (const auto& [id, point] : points_) {
+    if (IsVerifiedStatic(point) && point.last_seen_frame >= static_seen_since_frame) add(id);
+  }
   return local;
 }
 
-int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible) {
+int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
+              int static_seen_since_frame) {
   std::unordered_set<PointId> in_window;
   for (const KeyFrame& kf : keyframes_) in_window.insert(kf.points.begin(), kf.points.end());
   int removed = 0;
   for (auto it = points_.begin(); it != points_.end();) {
     const MapPoint& p = it->second;
-    const bool stale = p.last_seen_frame < oldest_frame_to_keep && !in_window.count(p.id);
+    const int keep_since = static_seen_since_frame >= 0 && IsVerifiedStatic(p)
+                               ? std::min(oldest_frame_to_keep, static_seen_since_frame)
+                               : oldest_frame_to_keep;
+    const bool stale = p.last_seen_frame < keep_since && !in_window.count(p.id);
     const bool unreliable =
         p.times_visible >= min_visible && p.times_found < min_found_ratio * p.times_visible;
     if (stale || unreliable) {

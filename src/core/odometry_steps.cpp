@@ -11,7 +11,7 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
                                    bool wide) {
   const TrackingConfig& cfg = config_.tracking;
   const PinholeCamera& camera = *current->frame->camera;
-  current->local_points = map_.LocalPoints(last_tracked_);
+  current->local_points = map_.LocalPoints(last_tracked_, StaticSeenSinceFrame());
   const std::vector<PointId>& local = current->local_points;
   const double radius = wide ? cfg.wide_search_radius_px : cfg.search_radius_px;
   current->matches = MatchLocalMap(&map_, local, current->features, camera, T_camera_world, radius,
@@ -151,6 +151,11 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
   }
 }
 
+int Odometry::StaticSeenSinceFrame() const {
+  const int keep = config_.tracking.keep_static_frames;
+  return keep > 0 ? std::max(0, frame_index_ - 1 - keep) : -1;
+}
+
 bool Odometry::NeedKeyFrame(int static_matches) const {
   const TrackingConfig& cfg = config_.tracking;
   const int since = frame_index_ - 1 - last_keyframe_frame_;
@@ -199,7 +204,8 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
   keyframe.measurements = MeasurementsOf(current, created);
   map_.AddKeyFrame(std::move(keyframe), cfg.window_keyframes);
-  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible);
+  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible,
+            StaticSeenSinceFrame());
   last_keyframe_frame_ = frame_index;
   last_keyframe_static_ = current.pose.num_inliers;
   last_tracked_.insert(last_tracked_.end(), created.begin(), created.end());

@@ -61,5 +61,29 @@ TEST(Map, CullRemovesStaleAndUnreliablePoints) {
   EXPECT_NE(map.Find(w), nullptr);
 }
 
+TEST(Map, VerifiedStaticPointsOutsideTheWindowAreKeptAndSearched) {
+  Map map;
+  MapPoint hidden_static;  // verified static, last seen in frame 8, in no window keyframe
+  hidden_static.last_seen_frame = 8;
+  MapPoint hidden_candidate = hidden_static;
+  hidden_candidate.candidate = true;
+  MapPoint hidden_dynamic = hidden_static;
+  hidden_dynamic.marked = false;
+  MapPoint long_gone = hidden_static;
+  long_gone.last_seen_frame = 2;
+  const PointId s = map.AddPoint(hidden_static), c = map.AddPoint(hidden_candidate);
+  const PointId d = map.AddPoint(hidden_dynamic), g = map.AddPoint(long_gone);
+  EXPECT_TRUE(map.LocalPoints({}).empty());  // no keyframe refers to them
+  const std::vector<PointId> local = map.LocalPoints({}, 5);
+  ASSERT_EQ(local.size(), 1u);
+  EXPECT_EQ(local[0], s);
+  // Window starts at frame 10; verified static points seen since frame 5 survive.
+  EXPECT_EQ(map.Cull(10, 0.25, 5, 5), 3);
+  EXPECT_NE(map.Find(s), nullptr);
+  EXPECT_EQ(map.Find(c), nullptr);
+  EXPECT_EQ(map.Find(d), nullptr);
+  EXPECT_EQ(map.Find(g), nullptr);
+}
+
 }  // namespace
 }  // namespace dslam

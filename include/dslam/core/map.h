@@ -76,14 +76,18 @@ class Map {
   /// Recent keyframes, oldest first.
   const std::deque<KeyFrame>& keyframes() const { return keyframes_; }
 
-  /// Ids of the points observed by the keyframes in the window plus `extra`, without duplicates
-  /// and without culled points: the local map that tracking searches.
-  std::vector<PointId> LocalPoints(const std::vector<PointId>& extra) const;
+  /// Ids of the points observed by the keyframes in the window plus `extra`, plus verified static
+  /// points (marked, not candidates) last seen at or after `static_seen_since_frame` (a negative
+  /// value: none), without duplicates and without culled points: the local map tracking searches.
+  std::vector<PointId> LocalPoints(const std::vector<PointId>& extra,
+                                   int static_seen_since_frame = -1) const;
 
   /// Removes points that are neither referenced by a window keyframe nor seen since
-  /// `oldest_frame_to_keep`, and points whose found/visible ratio fell below `min_found_ratio`
-  /// after `min_visible` sightings. Returns the number removed.
-  int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible);
+  /// `oldest_frame_to_keep` (verified static points: since `static_seen_since_frame`, when it is
+  /// earlier), and points whose found/visible ratio fell below `min_found_ratio` after
+  /// `min_visible` sightings. Returns the number removed.
+  int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
+           int static_seen_since_frame = -1);
 
   size_t size() const { return points_.size(); }  ///< number of map points
   void Clear();                                   ///< removes every point and keyframe

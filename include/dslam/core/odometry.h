@@ -61,6 +61,8 @@ class Odometry {
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(int static_matches) const;
+  /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
+  int StaticSeenSinceFrame() const;
   int MakeKeyFrame(const Current& current);
   void FuseStaticPoints(const Current& current);
   FrameMeasurements MeasurementsOf(const Current& current,

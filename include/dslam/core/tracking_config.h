@@ -34,6 +34,10 @@ struct TrackingConfig {
   double dynamic_neighbour_radius_px = 40.0;  ///< [px] neighbourhood for new-point labels
   double cull_min_found_ratio = 0.25;  ///< [-] found/visible below this after cull_min_visible
   int cull_min_visible = 8;            ///< [-] sightings before the found ratio is checked
+  /// [frames] verified static points that leave the keyframe window (e.g. hidden by a person
+  /// standing in front of the camera) stay in the map and the local map this long after they were
+  /// last seen, so they are found again when the view clears. 0: only window points.
+  int keep_static_frames = 90;
   /// [frames] a new map point is a candidate (not used for the pose while enough verified
   /// points exist) until the front end finds it static at least this long after its creation.
   /// 0: new points are trusted at once (the paper: new points start marked).
@@ -124,6 +128,13 @@ struct TrackingConfig {
       s.cull_min_found_ratio);
     v(FieldInfo{"cull_min_visible", "-", 1, 100000, "sightings before the ratio is checked", {}},
       s.cull_min_visible);
+    v(FieldInfo{"keep_static_frames",
+                "frames",
+                0,
+                100000,
+                "verified static points outside the window stay in the local map this long",
+                {}},
+      s.keep_static_frames);
     v(FieldInfo{"verify_frames",
                 "frames",
                 0,
