@@ -98,8 +98,10 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
   result.labels = std::move(selection.labels);
   RequireEvidenceAgainstStatic(result.edges, result.edge_verified, result.component,
                                selection.static_component, &result.labels);
-  for (int i = 0; i < num_points; ++i) {
-    if (!has_verified_edge[i]) result.labels[i] = PointLabel::kUnverified;
+  if (selection.static_component >= 0) {  // otherwise every label stays kUndecided
+    for (int i = 0; i < num_points; ++i) {
+      if (!has_verified_edge[i]) result.labels[i] = PointLabel::kUnverified;
+    }
   }
   result.static_component = selection.static_component;
   result.ambiguous = selection.ambiguous;

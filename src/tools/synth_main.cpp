@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
@@ -81,6 +82,14 @@ int main(int argc, char** argv) {
       return 2;
     }
     key = key.substr(2);
+    static const std::set<std::string> kKnown = {"scenario", "frames", "seed",    "camera",
+                                                 "output",   "bag",    "preview", "preview-frame",
+                                                 "list",     "help"};
+    if (!kKnown.count(key)) {
+      std::cerr << "dslam_synth: unknown option --" << key << "\n";
+      PrintUsage();
+      return 2;
+    }
     if (key == "list" || key == "help") {
       args[key] = "";
     } else if (i + 1 < argc) {
