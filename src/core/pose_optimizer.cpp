@@ -25,33 +25,43 @@ Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& covariance) {
 }
 
 // Paper Eq. rgbd_yik: r = C^{-1/2} (R_cw p_w + t_cw - y). Parameters: quaternion (x y z w), t.
-struct DepthResidual {
+// Analytic Jacobians (autodiff of the same expression cost most of the pose solve).
+class DepthResidual : public ceres::SizedCostFunction<3, 4, 3> {
+ public:
   DepthResidual(const Eigen::Vector3d& p_world, const Eigen::Vector3d& y,
                 const Eigen::Matrix3d& sqrt_information)
       : p_world_(p_world), y_(y), sqrt_information_(sqrt_information) {}
 
-  template <typename T>
-  bool operator()(const T* q_ptr, const T* t_ptr, T* residual_ptr) const {
-    const Eigen::Map<const Eigen::Quaternion<T>> q(q_ptr);
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t(t_ptr);
-    const Eigen::Matrix<T, 3, 1> e = q * p_world_.cast<T>() + t - y_.cast<T>();
-    Eigen::Map<Eigen::Matrix<T, 3, 1>> residual(residual_ptr);
-    residual = sqrt_information_.cast<T>() * e;
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Map<const Eigen::Quaterniond> q(parameters[0]);
+    const Eigen::Map<const Eigen::Vector3d> t(parameters[1]);
+    Eigen::Map<Eigen::Vector3d> r(residuals);
+    r = sqrt_information_ * (q * p_world_ + t - y_);
+    if (jacobians == nullptr) return true;
+    if (jacobians[0] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 3, 4, Eigen::RowMajor>> J_q(jacobians[0]);
+      J_q = sqrt_information_ * RotatedPointByQuaternion(q, p_world_);
+    }
+    if (jacobians[1] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J_t(jacobians[1]);
+      J_t = sqrt_information_;
+    }
     return true;
   }
 
   static std::unique_ptr<ceres::CostFunction> Create(const PoseObservation& o) {
-    return std::make_unique<ceres::AutoDiffCostFunction<DepthResidual, 3, 4, 3>>(
-        std::make_unique<DepthResidual>(o.p_world, o.y_camera, SqrtInformation(o.covariance))
-            .release());
+    return std::make_unique<DepthResidual>(o.p_world, o.y_camera, SqrtInformation(o.covariance));
   }
 
+ private:
   Eigen::Vector3d p_world_, y_;
   Eigen::Matrix3d sqrt_information_;
 };
 
-// Reprojection residual r = (pi(R_cw p_w + t_cw) - uv_ideal) / sigma_px.
-struct PixelResidual {
+// Reprojection residual r = (pi(R_cw p_w + t_cw) - uv_ideal) / sigma_px, analytic Jacobians.
+class PixelResidual : public ceres::SizedCostFunction<2, 4, 3> {
+ public:
   PixelResidual(const Eigen::Vector3d& p_world, const Eigen::Vector2d& uv, double sigma_px,
                 const PinholeCamera& camera)
       : p_world_(p_world),
@@ -62,22 +72,35 @@ struct PixelResidual {
         cx_(camera.cx()),
         cy_(camera.cy()) {}
 
-  template <typename T>
-  bool operator()(const T* q_ptr, const T* t_ptr, T* residual) const {
-    const Eigen::Map<const Eigen::Quaternion<T>> q(q_ptr);
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t(t_ptr);
-    const Eigen::Matrix<T, 3, 1> p = q * p_world_.cast<T>() + t;
-    residual[0] = (T(fx_) * p.x() / p.z() + T(cx_) - T(uv_.x())) * T(inv_sigma_);
-    residual[1] = (T(fy_) * p.y() / p.z() + T(cy_) - T(uv_.y())) * T(inv_sigma_);
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Map<const Eigen::Quaterniond> q(parameters[0]);
+    const Eigen::Map<const Eigen::Vector3d> t(parameters[1]);
+    const Eigen::Vector3d p = q * p_world_ + t;
+    residuals[0] = (fx_ * p.x() / p.z() + cx_ - uv_.x()) * inv_sigma_;
+    residuals[1] = (fy_ * p.y() / p.z() + cy_ - uv_.y()) * inv_sigma_;
+    if (jacobians == nullptr) return true;
+    Eigen::Matrix<double, 2, 3> d_projection;
+    d_projection << fx_ / p.z(), 0.0, -fx_ * p.x() / (p.z() * p.z()), 0.0, fy_ / p.z(),
+        -fy_ * p.y() / (p.z() * p.z());
+    d_projection *= inv_sigma_;
+    if (jacobians[0] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 2, 4, Eigen::RowMajor>> J_q(jacobians[0]);
+      J_q = d_projection * RotatedPointByQuaternion(q, p_world_);
+    }
+    if (jacobians[1] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>> J_t(jacobians[1]);
+      J_t = d_projection;
+    }
     return true;
   }
 
   static std::unique_ptr<ceres::CostFunction> Create(const PoseObservation& o,
                                                      const PinholeCamera& camera) {
-    return std::make_unique<ceres::AutoDiffCostFunction<PixelResidual, 2, 4, 3>>(
-        std::make_unique<PixelResidual>(o.p_world, o.uv_ideal, o.pixel_sigma_px, camera).release());
+    return std::make_unique<PixelResidual>(o.p_world, o.uv_ideal, o.pixel_sigma_px, camera);
   }
 
+ private:
   Eigen::Vector3d p_world_;
   Eigen::Vector2d uv_;
   double inv_sigma_, fx_, fy_, cx_, cy_;
@@ -136,6 +159,17 @@ Eigen::Isometry3d ToIsometry(const Eigen::Quaterniond& q, const Eigen::Vector3d&
 }
 
 }  // namespace
+
+Eigen::Matrix<double, 3, 4> RotatedPointByQuaternion(const Eigen::Quaterniond& q,
+                                                     const Eigen::Vector3d& p) {
+  const Eigen::Vector3d u = q.vec();
+  Eigen::Matrix<double, 3, 4> J;
+  J.leftCols<3>() =
+      -2.0 * q.w() * Skew(p) +
+      2.0 * (u * p.transpose() + u.dot(p) * Eigen::Matrix3d::Identity() - 2.0 * p * u.transpose());
+  J.col(3) = 2.0 * u.cross(p);
+  return J;
+}
 
 PoseObservation PoseObservation::WithDepth(const Eigen::Vector3d& p_world,
                                            const PointMeasurement& m) {

@@ -14,6 +14,24 @@ Eigen::Isometry3d Perturb(const Eigen::Isometry3d& T) {
          Eigen::AngleAxisd(0.05, Eigen::Vector3d(1.0, 0.5, -0.2).normalized()) * T;
 }
 
+TEST(PoseOptimizer, RotatedPointJacobianMatchesFiniteDifferences) {
+  const Eigen::Vector3d p(0.7, -1.2, 2.5);
+  // A unit quaternion and a non-unit one (the solver's parameters between manifold steps).
+  for (const Eigen::Quaterniond& q :
+       {Eigen::Quaterniond(Eigen::AngleAxisd(0.8, Eigen::Vector3d(1.0, -2.0, 0.5).normalized())),
+        Eigen::Quaterniond(1.1, 0.2, -0.3, 0.4)}) {
+    const Eigen::Matrix<double, 3, 4> J = RotatedPointByQuaternion(q, p);
+    const double h = 1e-7;
+    for (int k = 0; k < 4; ++k) {
+      Eigen::Quaterniond plus = q, minus = q;
+      plus.coeffs()[k] += h;
+      minus.coeffs()[k] -= h;
+      const Eigen::Vector3d numeric = (plus * p - minus * p) / (2.0 * h);
+      EXPECT_LT((J.col(k) - numeric).norm(), 1e-6) << "coefficient " << k;
+    }
+  }
+}
+
 TEST(PoseOptimizer, RecoversPoseAndFlagsOutliers) {
   const PinholeCamera camera = test::TestCamera();
   const test::PoseScene scene = test::MakePoseScene(camera, 200, 0.3, 11);

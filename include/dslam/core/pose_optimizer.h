@@ -62,6 +62,12 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
 double SquaredError(const PoseObservation& observation, const Eigen::Isometry3d& T_camera_world,
                     const PinholeCamera& camera);
 
+/// Jacobian of Eigen's rotation q * p = p + 2w (u x p) + 2u x (u x p), u = (q.x, q.y, q.z), with
+/// respect to the coefficients (q.x, q.y, q.z, q.w) [m per unit coefficient]; exact for any q, unit
+/// or not (the motion-only BA's analytic residual Jacobians, before the quaternion manifold).
+Eigen::Matrix<double, 3, 4> RotatedPointByQuaternion(const Eigen::Quaterniond& q,
+                                                     const Eigen::Vector3d& p);
+
 /// Jacobian [6x6] mapping the solver perturbation [dtheta_c, dt_c] of T_camera_world to the ROS
 /// pose perturbation [dp_w (3, m), dtheta_w (3, rad)] of T_world_camera (position in the world
 /// frame, rotation about the fixed world axes, nav_msgs/Odometry covariance order).
