@@ -24,6 +24,30 @@ Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& covariance) {
   return Eigen::LLT<Eigen::Matrix3d>(information).matrixU();
 }
 
+// d pi(p) / d p of the pinhole projection [px/m] at camera-frame point p.
+Eigen::Matrix<double, 2, 3> ProjectionJacobian(const Eigen::Vector3d& p, double fx, double fy) {
+  Eigen::Matrix<double, 2, 3> J;
+  J << fx / p.z(), 0.0, -fx * p.x() / (p.z() * p.z()), 0.0, fy / p.z(),
+      -fy * p.y() / (p.z() * p.z());
+  return J;
+}
+
+// Writes the Jacobians of a residual r = f(q * p_world + t) with respect to the quaternion
+// coefficients and t (Ceres row-major blocks; null blocks are skipped), given df/dp_camera.
+template <int N>
+void WritePoseJacobians(const Eigen::Matrix<double, N, 3>& d_residual_d_point,
+                        const Eigen::Quaterniond& q, const Eigen::Vector3d& p_world,
+                        double** jacobians) {
+  if (jacobians[0] != nullptr) {
+    Eigen::Map<Eigen::Matrix<double, N, 4, Eigen::RowMajor>> J_q(jacobians[0]);
+    J_q = d_residual_d_point * RotatedPointByQuaternion(q, p_world);
+  }
+  if (jacobians[1] != nullptr) {
+    Eigen::Map<Eigen::Matrix<double, N, 3, Eigen::RowMajor>> J_t(jacobians[1]);
+    J_t = d_residual_d_point;
+  }
+}
+
 // Paper Eq. rgbd_yik: r = C^{-1/2} (R_cw p_w + t_cw - y). Parameters: quaternion (x y z w), t.
 // Analytic Jacobians (autodiff of the same expression cost most of the pose solve).
 class DepthResidual : public ceres::SizedCostFunction<3, 4, 3> {
@@ -38,15 +62,7 @@ class DepthResidual : public ceres::SizedCostFunction<3, 4, 3> {
     const Eigen::Map<const Eigen::Vector3d> t(parameters[1]);
     Eigen::Map<Eigen::Vector3d> r(residuals);
     r = sqrt_information_ * (q * p_world_ + t - y_);
-    if (jacobians == nullptr) return true;
-    if (jacobians[0] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 3, 4, Eigen::RowMajor>> J_q(jacobians[0]);
-      J_q = sqrt_information_ * RotatedPointByQuaternion(q, p_world_);
-    }
-    if (jacobians[1] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J_t(jacobians[1]);
-      J_t = sqrt_information_;
-    }
+    if (jacobians != nullptr) WritePoseJacobians<3>(sqrt_information_, q, p_world_, jacobians);
     return true;
   }
 
@@ -80,18 +96,8 @@ class PixelResidual : public ceres::SizedCostFunction<2, 4, 3> {
     residuals[0] = (fx_ * p.x() / p.z() + cx_ - uv_.x()) * inv_sigma_;
     residuals[1] = (fy_ * p.y() / p.z() + cy_ - uv_.y()) * inv_sigma_;
     if (jacobians == nullptr) return true;
-    Eigen::Matrix<double, 2, 3> d_projection;
-    d_projection << fx_ / p.z(), 0.0, -fx_ * p.x() / (p.z() * p.z()), 0.0, fy_ / p.z(),
-        -fy_ * p.y() / (p.z() * p.z());
-    d_projection *= inv_sigma_;
-    if (jacobians[0] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 2, 4, Eigen::RowMajor>> J_q(jacobians[0]);
-      J_q = d_projection * RotatedPointByQuaternion(q, p_world_);
-    }
-    if (jacobians[1] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>> J_t(jacobians[1]);
-      J_t = d_projection;
-    }
+    const Eigen::Matrix<double, 2, 3> d_residual = ProjectionJacobian(p, fx_, fy_) * inv_sigma_;
+    WritePoseJacobians<2>(d_residual, q, p_world_, jacobians);
     return true;
   }
 
@@ -113,10 +119,7 @@ Eigen::MatrixXd WhitenedJacobian(const PoseObservation& o, const Eigen::Isometry
   Eigen::Matrix<double, 3, 6> dp;
   dp << -Skew(p), Eigen::Matrix3d::Identity();
   if (o.has_depth) return SqrtInformation(o.covariance) * dp;
-  Eigen::Matrix<double, 2, 3> dproj;
-  dproj << camera.fx() / p.z(), 0.0, -camera.fx() * p.x() / (p.z() * p.z()), 0.0,
-      camera.fy() / p.z(), -camera.fy() * p.y() / (p.z() * p.z());
-  return dproj * dp / o.pixel_sigma_px;
+  return ProjectionJacobian(p, camera.fx(), camera.fy()) * dp / o.pixel_sigma_px;
 }
 
 // One optimisation round over the observations flagged in `use`; updates q and t.
