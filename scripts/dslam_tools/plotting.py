@@ -33,7 +33,7 @@ def _top_view(axes, gt_xyz, est_xyz, plane):
     axes.set_title("top view (%s-%s plane)" % (AXIS_NAMES[a], AXIS_NAMES[b]))
 
 
-def _over_time(figure, grid, gt_t, gt_xyz, est_t, est_xyz, result):
+def _over_time(figure, grid, gt_t, gt_xyz, est_t, est_xyz, errors):
     axes_list = []
     for row in range(3):
         axes = figure.add_subplot(grid[row, 1], sharex=axes_list[0] if axes_list else None)
@@ -43,7 +43,7 @@ def _over_time(figure, grid, gt_t, gt_xyz, est_t, est_xyz, result):
         axes.grid(True, alpha=0.3)
         axes_list.append(axes)
     axes = figure.add_subplot(grid[3, 1], sharex=axes_list[0])
-    axes.plot(est_t[result["index_est"]], result["errors"] * 100.0, "-", color="tab:blue", lw=1.0)
+    axes.plot(est_t, errors * 100.0, "-", color="tab:blue", lw=1.0)
     axes.set_ylim(bottom=0.0)
     axes.set_ylabel("error [cm]")
     axes.set_xlabel("time [s]")
@@ -52,19 +52,21 @@ def _over_time(figure, grid, gt_t, gt_xyz, est_t, est_xyz, result):
         plt.setp(each.get_xticklabels(), visible=False)
 
 
-def plot_trajectories(output, gt_stamps, gt_poses, est_stamps, result, title="", plane="auto"):
+def plot_trajectories(output, result, title="", plane="auto"):
     """Writes a PNG: top view (see choose_plane) and x, y, z and the position error over time
-    (seconds since the first ground-truth stamp). `result` is trajectory.align_and_ate()'s dict;
-    the estimate is drawn aligned to the ground truth."""
-    gt_xyz = gt_poses[:, :3, 3]
-    est_xyz = result["est_aligned"][:, :3, 3]
+    (seconds since the first ground-truth stamp). `result` is trajectory.evaluate()'s dict: the
+    (corrected) ground truth is drawn whole, the estimate as its associated poses aligned to the
+    ground truth, the error per associated pose."""
+    gt_stamps, gt_xyz = result["groundtruth"]
+    est_stamps, est_xyz = result["aligned"]
     origin = gt_stamps[0] if len(gt_stamps) else 0.0
     figure = plt.figure(figsize=(13, 6.5), dpi=100)
     grid = figure.add_gridspec(4, 2, width_ratios=[1.0, 1.25], hspace=0.15, wspace=0.25)
     _top_view(figure.add_subplot(grid[:, 0]), gt_xyz, est_xyz, choose_plane(gt_xyz, plane))
-    _over_time(figure, grid, gt_stamps - origin, gt_xyz, est_stamps - origin, est_xyz, result)
+    _over_time(figure, grid, gt_stamps - origin, gt_xyz, est_stamps - origin, est_xyz,
+               result["errors"])
     heading = "ATE RMSE %.4f m over %d poses (SE(3) aligned)" % (
-        result["ate_rmse"], len(result["errors"]))
+        result["metrics"]["ate_rmse_m"], result["metrics"]["associated_poses"])
     figure.suptitle(heading if not title else "%s\n%s" % (title, heading), fontsize=11)
     figure.savefig(output, bbox_inches="tight")
     plt.close(figure)

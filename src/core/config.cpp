@@ -21,8 +21,9 @@ void Config::Validate() const {
     throw ConfigError("depth_noise.min_depth_m must be smaller than depth_noise.max_depth_m");
   }
   if (tracking.wide_search_radius_px < tracking.search_radius_px) {
-    throw ConfigError("tracking.wide_search_radius_px must not be smaller than "
-                      "tracking.search_radius_px");
+    throw ConfigError(
+        "tracking.wide_search_radius_px must not be smaller than "
+        "tracking.search_radius_px");
   }
   if (features.fast_threshold_min > features.fast_threshold) {
     throw ConfigError("features.fast_threshold_min must not exceed features.fast_threshold");

@@ -38,8 +38,6 @@ cv::Mat ReadDepthPng(const std::string& path, double units_per_metre) {
   return DepthFromScaledUint16(raw, units_per_metre);
 }
 
-int CountValidDepth(const cv::Mat& depth_m) {
-  return cv::countNonZero(depth_m > 0.0f);
-}
+int CountValidDepth(const cv::Mat& depth_m) { return cv::countNonZero(depth_m > 0.0f); }
 
 }  // namespace dslam

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "dslam/core/geometry.h"
+
 namespace dslam {
 namespace {
 
@@ -79,6 +81,13 @@ std::optional<PointMeasurement> MeasurePoint(const cv::Mat& depth_m,
   m.y_camera = camera.BackProject(uv_ideal, mixture->mean_m);
   m.covariance = PointCovariance(uv_ideal, *mixture, config.pixel_sigma_px, camera);
   return m;
+}
+
+PointMeasurement Transformed(const PointMeasurement& m, const Eigen::Isometry3d& T) {
+  PointMeasurement out = m;
+  out.y_camera = T * m.y_camera;
+  out.covariance = RotatedCovariance(T.rotation(), m.covariance);
+  return out;
 }
 
 }  // namespace dslam

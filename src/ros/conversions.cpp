@@ -7,7 +7,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dslam/core/depth_conversion.h"
-#include "dslam/core/pose_optimizer.h"
+#include "dslam/core/geometry.h"
+#include "dslam/tracking/pose_optimizer.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -96,11 +97,9 @@ Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& in
   // T_odom_base = T_bc T_wc T_cb: dp_ob = R_bc (dp - [R_wc t_cb]x dtheta), dtheta_o = R_bc dtheta.
   const Eigen::Matrix3d R_bc = T_base_camera.rotation();
   const Eigen::Vector3d lever = T_world_camera.rotation() * T_base_camera.inverse().translation();
-  Eigen::Matrix3d skew;
-  skew << 0, -lever.z(), lever.y(), lever.z(), 0, -lever.x(), -lever.y(), lever.x(), 0;
   Matrix6d J = Matrix6d::Zero();
   J.block<3, 3>(0, 0) = R_bc;
-  J.block<3, 3>(0, 3) = -R_bc * skew;
+  J.block<3, 3>(0, 3) = -R_bc * Skew(lever);
   J.block<3, 3>(3, 3) = R_bc;
   return J * cov_world_camera * J.transpose();
 }

@@ -3,7 +3,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 #include <pluginlib/class_list_macros.hpp>
 
-#include "dslam/core/dataset_io.h"
+#include "dslam/io/dataset_io.h"
 #include "dslam/ros/conversions.h"
 #include "dslam/ros/param_loader.h"
 
@@ -11,7 +11,8 @@ namespace dslam {
 namespace ros_layer {
 
 OdometryNodelet::~OdometryNodelet() {
-  // Trap 7 (message_filters lock_error at shutdown): synchronizers first, then the filters.
+  // message_filters throws boost::lock_error when a filter is destroyed while a synchronizer
+  // connected to it still exists: destroy the synchronizers first, then the filters.
   approximate_sync_.reset();
   exact_sync_.reset();
   for (auto* sub : {colour_sub_.get(), depth_sub_.get()}) {

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <string>
 
-#include "dslam/core/config_io.h"
+#include "dslam/io/config_io.h"
 
 int main(int argc, char** argv) {
   if (argc == 3 && std::string(argv[1]) == "--check") {

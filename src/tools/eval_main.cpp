@@ -1,28 +1,29 @@
 // dslam_eval: trajectory accuracy of an estimate against ground truth (TUM definitions: ATE after
 // SE(3) alignment, RPE over 1 s, plus coverage of the sequence). See docs/readme/eval.md.
 //   dslam_eval --groundtruth GT --trajectory EST [--camera camera.yaml] [--frames rgb.txt]
-//              [--json OUT.json] [--write-groundtruth OUT.txt] [--max-dt S]
-//              [--rpe-interval S] [--max-gap S]
+//              [--json OUT.json] [--write-groundtruth OUT.txt] [--save-aligned OUT.txt]
+//              [--save-groundtruth OUT.txt] [--max-dt S] [--rpe-interval S] [--max-gap S]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "dslam/core/dataset_io.h"
-#include "dslam/core/groundtruth_correction.h"
-#include "dslam/core/trajectory_io.h"
-#include "dslam/core/trajectory_metrics.h"
+#include "dslam/eval/groundtruth_correction.h"
+#include "dslam/eval/json_writer.h"
+#include "dslam/eval/trajectory_metrics.h"
+#include "dslam/io/dataset_io.h"
+#include "dslam/io/trajectory_io.h"
 
 namespace {
 
 constexpr char kUsage[] =
     "usage: dslam_eval --groundtruth GT.txt --trajectory EST.txt [--camera camera.yaml]\n"
     "                  [--frames rgb.txt] [--json OUT.json] [--write-groundtruth OUT.txt]\n"
+    "                  [--save-aligned OUT.txt] [--save-groundtruth OUT.txt]\n"
     "                  [--max-dt S] [--rpe-interval S] [--max-gap S]\n"
     "  --groundtruth   ground truth, TUM format (timestamp tx ty tz qx qy qz qw)\n"
     "  --trajectory    estimated trajectory T_world_camera, TUM format\n"
@@ -31,7 +32,12 @@ constexpr char kUsage[] =
     "  --frames        rgb.txt of the input frames: coverage is measured over their time span\n"
     "                  (clipped to the ground truth's), else over the ground truth's span\n"
     "  --json          also write the numbers as JSON to this file\n"
-    "  --write-groundtruth  write the (corrected) ground truth used, TUM format\n"
+    "  --write-groundtruth  write the (corrected) ground truth used, every pose, TUM format\n"
+    "  --save-aligned  write the associated estimated poses (estimated stamps) moved into the\n"
+    "                  ground truth's world frame by the SE(3) alignment of the ATE, TUM format\n"
+    "  --save-groundtruth  write the (corrected) ground-truth poses of the same associated pairs\n"
+    "                  (ground-truth stamps), TUM format; line k pairs with line k of\n"
+    "                  --save-aligned\n"
     "  --max-dt        association tolerance [s] (default 0.02)\n"
     "  --rpe-interval  RPE interval [s] (default 1.0)\n"
     "  --max-gap       longest gap between estimates counted as covered [s] (default 0.1)\n";
@@ -48,8 +54,8 @@ struct Arguments {
 
 Arguments ParseArguments(int argc, char** argv) {
   static const std::vector<std::string> kKnown = {
-      "groundtruth",       "trajectory", "camera",       "frames", "json",
-      "write-groundtruth", "max-dt",     "rpe-interval", "max-gap"};
+      "groundtruth",  "trajectory",       "camera", "frames",       "json",   "write-groundtruth",
+      "save-aligned", "save-groundtruth", "max-dt", "rpe-interval", "max-gap"};
   Arguments args;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -115,61 +121,56 @@ void PrintTable(const dslam::TrajectoryMetrics& m, const std::string& correction
   row("groundtruth correction", "", correction);
 }
 
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char ch : text) {
-    if (ch == '"' || ch == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (static_cast<unsigned char>(ch) < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof(buffer), "\\u%04x", ch);
-      out += buffer;
-    } else {
-      out += ch;
-    }
-  }
-  return out + "\"";
-}
-
-std::string JsonNumber(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.9g", value);
-  return buffer;
-}
-
-void WriteJson(const std::string& path, const dslam::TrajectoryMetrics& m, const Arguments& args,
-               const std::string& correction, const dslam::TrajectoryMetricsOptions& options) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
+// The evaluation's settings and numbers, JSON (scripts/benchmark.py and plot_trajectory read it).
+dslam::JsonObject MetricsJson(const dslam::TrajectoryMetrics& m, const Arguments& args,
+                              const std::string& correction,
+                              const dslam::TrajectoryMetricsOptions& options) {
+  constexpr int kDigits = 9;  // significant digits of every number
   const bool has_rpe = m.rpe.num_pairs > 0;
-  const double nan = std::nan("");
-  out << "{\n"
-      << "  \"groundtruth\": " << JsonString(args.values.at("groundtruth")) << ",\n"
-      << "  \"trajectory\": " << JsonString(args.values.at("trajectory")) << ",\n"
-      << "  \"groundtruth_correction\": " << JsonString(correction) << ",\n"
-      << "  \"max_association_dt_s\": " << JsonNumber(options.max_association_dt_s) << ",\n"
-      << "  \"rpe_interval_s\": " << JsonNumber(options.rpe_interval_s) << ",\n"
-      << "  \"max_gap_s\": " << JsonNumber(options.max_gap_s) << ",\n"
-      << "  \"ate_rmse_m\": " << JsonNumber(m.ate_m.rmse) << ",\n"
-      << "  \"ate_mean_m\": " << JsonNumber(m.ate_m.mean) << ",\n"
-      << "  \"ate_median_m\": " << JsonNumber(m.ate_m.median) << ",\n"
-      << "  \"ate_max_m\": " << JsonNumber(m.ate_m.max) << ",\n"
-      << "  \"rpe_trans_rmse_m_per_s\": "
-      << JsonNumber(has_rpe ? m.rpe.translation_rmse_m_per_s : nan) << ",\n"
-      << "  \"rpe_rot_rmse_deg_per_s\": "
-      << JsonNumber(has_rpe ? m.rpe.rotation_rmse_deg_per_s : nan) << ",\n"
-      << "  \"rpe_pairs\": " << m.rpe.num_pairs << ",\n"
-      << "  \"associated_poses\": " << m.num_associated << ",\n"
-      << "  \"estimated_poses\": " << m.num_estimated << ",\n"
-      << "  \"groundtruth_poses\": " << m.num_groundtruth << ",\n"
-      << "  \"coverage\": " << JsonNumber(m.coverage.fraction) << ",\n"
-      << "  \"coverage_covered_s\": " << JsonNumber(m.coverage.covered_s) << ",\n"
-      << "  \"coverage_span_s\": " << JsonNumber(m.coverage.span_end_s - m.coverage.span_start_s)
-      << "\n"
-      << "}\n";
-  if (!out) throw std::runtime_error("error while writing " + path);
+  const double nan = std::nan("");  // written as null
+  const dslam::Coverage& c = m.coverage;
+  dslam::JsonObject json;
+  json.AddString("groundtruth", args.values.at("groundtruth"))
+      .AddString("trajectory", args.values.at("trajectory"))
+      .AddString("groundtruth_correction", correction)
+      .AddNumber("max_association_dt_s", options.max_association_dt_s, kDigits)
+      .AddNumber("rpe_interval_s", options.rpe_interval_s, kDigits)
+      .AddNumber("max_gap_s", options.max_gap_s, kDigits)
+      .AddNumber("ate_rmse_m", m.ate_m.rmse, kDigits)
+      .AddNumber("ate_mean_m", m.ate_m.mean, kDigits)
+      .AddNumber("ate_median_m", m.ate_m.median, kDigits)
+      .AddNumber("ate_max_m", m.ate_m.max, kDigits)
+      .AddNumber("rpe_trans_rmse_m_per_s", has_rpe ? m.rpe.translation_rmse_m_per_s : nan, kDigits)
+      .AddNumber("rpe_rot_rmse_deg_per_s", has_rpe ? m.rpe.rotation_rmse_deg_per_s : nan, kDigits)
+      .AddInteger("rpe_pairs", static_cast<long long>(m.rpe.num_pairs))
+      .AddInteger("associated_poses", static_cast<long long>(m.num_associated))
+      .AddInteger("estimated_poses", static_cast<long long>(m.num_estimated))
+      .AddInteger("groundtruth_poses", static_cast<long long>(m.num_groundtruth))
+      .AddNumber("coverage", c.fraction, kDigits)
+      .AddNumber("coverage_covered_s", c.covered_s, kDigits)
+      .AddNumber("coverage_span_s", c.span_end_s - c.span_start_s, kDigits);
+  return json;
+}
+
+// --save-aligned and --save-groundtruth: the associated pairs, the estimate moved by the ATE
+// alignment. EvaluateTrajectory() pairs the poses with AssociatePoses() and
+// options.max_association_dt_s (src/eval/trajectory_metrics.cpp); this repeats that call.
+void SaveAssociatedPoses(const Arguments& args, const dslam::Trajectory& estimated,
+                         const dslam::Trajectory& groundtruth, const dslam::TrajectoryMetrics& m,
+                         const dslam::TrajectoryMetricsOptions& options) {
+  const bool aligned = args.values.count("save-aligned") > 0;
+  const bool matched = args.values.count("save-groundtruth") > 0;
+  if (!aligned && !matched) return;
+  const dslam::PoseAssociation pairs =
+      dslam::AssociatePoses(estimated, groundtruth, options.max_association_dt_s);
+  if (aligned) {
+    dslam::Trajectory moved = pairs.estimated;
+    for (dslam::StampedPose& pose : moved) {
+      pose.T_world_camera = m.T_gtworld_estworld * pose.T_world_camera;
+    }
+    dslam::WriteTumTrajectory(args.values.at("save-aligned"), moved);
+  }
+  if (matched) dslam::WriteTumTrajectory(args.values.at("save-groundtruth"), pairs.groundtruth);
 }
 
 int Run(const Arguments& args) {
@@ -202,8 +203,10 @@ int Run(const Arguments& args) {
       dslam::EvaluateTrajectory(estimated, groundtruth, frame_stamps, options);
   PrintTable(metrics, correction_name);
   if (args.values.count("json")) {
-    WriteJson(args.values.at("json"), metrics, args, correction_name, options);
+    dslam::WriteJsonFile(args.values.at("json"),
+                         MetricsJson(metrics, args, correction_name, options));
   }
+  SaveAssociatedPoses(args, estimated, groundtruth, metrics, options);
   return 0;
 }
 

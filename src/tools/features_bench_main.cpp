@@ -1,4 +1,4 @@
-// dslam_features_bench: median runtime of ORB extraction (640x480, synthetic texture with depth)
+// dslam_features_bench: median runtime of ORB extraction (640x480, random-block texture with depth)
 // and of the motion-only BA with 300 RGB-D correspondences (20% outliers). OpenCV's thread count
 // (feature detection runs in parallel) is the second argument; the BA is single-threaded.
 // Usage: dslam_features_bench [repetitions=30] [threads=1]
@@ -13,10 +13,10 @@
 #include <Eigen/Cholesky>
 #include <opencv2/imgproc.hpp>
 
-#include "dslam/core/features.h"
-#include "dslam/core/pose_optimizer.h"
-#include "dslam/core/run_statistics.h"
 #include "dslam/core/stopwatch.h"
+#include "dslam/eval/run_statistics.h"
+#include "dslam/features/features.h"
+#include "dslam/tracking/pose_optimizer.h"
 
 namespace {
 

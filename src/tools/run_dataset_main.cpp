@@ -12,12 +12,13 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "dslam/core/config_io.h"
-#include "dslam/core/dataset_io.h"
-#include "dslam/core/odometry.h"
-#include "dslam/core/run_statistics.h"
-#include "dslam/core/segmentation_score.h"
-#include "dslam/core/trajectory_io.h"
+#include "dslam/eval/json_writer.h"
+#include "dslam/eval/run_statistics.h"
+#include "dslam/eval/segmentation_score.h"
+#include "dslam/io/config_io.h"
+#include "dslam/io/dataset_io.h"
+#include "dslam/io/trajectory_io.h"
+#include "dslam/tracking/odometry.h"
 
 namespace {
 
@@ -103,33 +104,34 @@ void WriteSegmentationRow(int frame, const dslam::SegmentationScore& s, std::ofs
        << s.candidates_on_static() << '\n';
 }
 
-// The run's numbers as JSON (benchmark scripts read it).
-void WriteSummaryJson(const std::string& path, const dslam::RunSummary& summary,
-                      const dslam::SegmentationScore& score, bool scored, bool static_points) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  out << "{\n  \"frames\": " << summary.frames()
-      << ",\n  \"frames_with_pose\": " << summary.frames_with_pose()
-      << ",\n  \"lost_frames\": " << summary.lost_frames()
-      << ",\n  \"static_points\": " << (static_points ? "true" : "false")
-      << ",\n  \"median_graph_points\": " << summary.MedianGraphPoints()
-      << ",\n  \"labelled_dynamic_share\": " << summary.LabelledDynamicShare();
+// The run's numbers as JSON (scripts/benchmark.py reads it).
+// `scored`: the folder has masks; "static_points" is config.static_points.enabled.
+dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
+                              const dslam::SegmentationScore& score, bool scored,
+                              const dslam::Config& config) {
+  constexpr int kDigits = 6;  // significant digits of every number
+  dslam::JsonObject json;
+  json.AddInteger("frames", summary.frames())
+      .AddInteger("frames_with_pose", summary.frames_with_pose())
+      .AddInteger("lost_frames", summary.lost_frames())
+      .AddBool("static_points", config.static_points.enabled)
+      .AddNumber("median_graph_points", summary.MedianGraphPoints(), kDigits)
+      .AddNumber("labelled_dynamic_share", summary.LabelledDynamicShare(), kDigits);
   for (const char* stage :
        {"features", "matching", "initial_pose", "static_points", "refine", "mapping", "total"}) {
-    out << ",\n  \"median_" << stage << "_ms\": " << summary.MedianMs(stage);
+    json.AddNumber(std::string("median_") + stage + "_ms", summary.MedianMs(stage), kDigits);
   }
-  if (scored) {
-    out << ",\n  \"dynamic_precision\": " << score.Precision()
-        << ",\n  \"dynamic_recall\": " << score.Recall()
-        << ",\n  \"false_dynamic_rate\": " << score.FalseDynamicRate()
-        << ",\n  \"true_dynamic\": " << score.true_dynamic()
-        << ",\n  \"false_dynamic\": " << score.false_dynamic()
-        << ",\n  \"missed_dynamic\": " << score.missed_dynamic()
-        << ",\n  \"true_static\": " << score.true_static()
-        << ",\n  \"candidates_on_dynamic\": " << score.candidates_on_dynamic()
-        << ",\n  \"candidates_on_static\": " << score.candidates_on_static();
-  }
-  out << "\n}\n";
+  if (!scored) return json;
+  json.AddNumber("dynamic_precision", score.Precision(), kDigits)
+      .AddNumber("dynamic_recall", score.Recall(), kDigits)
+      .AddNumber("false_dynamic_rate", score.FalseDynamicRate(), kDigits)
+      .AddInteger("true_dynamic", score.true_dynamic())
+      .AddInteger("false_dynamic", score.false_dynamic())
+      .AddInteger("missed_dynamic", score.missed_dynamic())
+      .AddInteger("true_static", score.true_static())
+      .AddInteger("candidates_on_dynamic", score.candidates_on_dynamic())
+      .AddInteger("candidates_on_static", score.candidates_on_static());
+  return json;
 }
 
 int Run(const Args& args) {
@@ -180,7 +182,7 @@ int Run(const Args& args) {
         score.candidates_on_dynamic(), score.candidates_on_static());
   }
   if (!args.summary.empty()) {
-    WriteSummaryJson(args.summary, summary, score, !masks.empty(), config.static_points.enabled);
+    dslam::WriteJsonFile(args.summary, SummaryJson(summary, score, !masks.empty(), config));
   }
   std::printf(
       "summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, median %.1f "

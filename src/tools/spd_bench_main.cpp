@@ -1,23 +1,23 @@
-// dslam_spd_bench: median runtime of DetermineStaticPoints on synthetic scenes (a room with a
-// moving cluster, see synthetic_scene.h) for a few problem sizes and frame counts.
+// dslam_spd_bench: median runtime of DetermineStaticPoints on point scenes (a room with a
+// moving cluster, see dslam/synth/point_scene.h) for a few problem sizes and frame counts.
 // Usage: dslam_spd_bench [repetitions=50] [method=least_squares|direct]
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "dslam/core/run_statistics.h"
-#include "dslam/core/static_points.h"
-#include "dslam/core/synthetic_scene.h"
+#include "dslam/eval/run_statistics.h"
+#include "dslam/static_points/static_points.h"
+#include "dslam/synth/point_scene.h"
 
 namespace {
 
 void Bench(int points, int frames, int repetitions, const dslam::StaticPointsConfig& config) {
-  dslam::SyntheticSceneOptions o;
+  dslam::synth::PointSceneOptions o;
   o.frames = frames;
   o.dynamic_points = points / 6;
   o.static_points = points - o.dynamic_points;
-  const dslam::SyntheticScene scene = dslam::MakeSyntheticScene(o);
+  const dslam::synth::PointScene scene = dslam::synth::MakePointScene(o);
   std::vector<double> total, graph, culling, components;
   dslam::StaticPointsStats last;
   for (int r = 0; r < repetitions; ++r) {
@@ -28,8 +28,8 @@ void Bench(int points, int frames, int repetitions, const dslam::StaticPointsCon
     components.push_back(last.components_ms);
   }
   std::printf("| %5d | %2d | %6d | %5d | %3d | %7.3f | %7.3f | %7.3f | %7.3f |\n", points, frames,
-              last.edges, last.culled_edges, last.rounds, dslam::Median(total), dslam::Median(graph),
-              dslam::Median(culling), dslam::Median(components));
+              last.edges, last.culled_edges, last.rounds, dslam::Median(total),
+              dslam::Median(graph), dslam::Median(culling), dslam::Median(components));
 }
 
 }  // namespace

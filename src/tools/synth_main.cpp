@@ -12,7 +12,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "dslam/core/synth_writer.h"
+#include "dslam/synth/writer.h"
 
 namespace {
 

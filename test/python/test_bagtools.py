@@ -1,5 +1,7 @@
-"""Tests of the bagtools Python tools: tum_to_bag and plot_trajectory, on tiny synthetic data."""
+"""Tests of the bagtools Python tools: tum_to_bag and plot_trajectory, on tiny synthetic data.
+plot_trajectory and the EvalToolTest cases run the built C++ tool dslam_eval."""
 
+import json
 import math
 import os
 import re
@@ -204,83 +206,176 @@ class DatasetTest(unittest.TestCase):
         self.assertRaises(ValueError, dataset.stamp_to_sec_nsec, "1e9")
 
 
-def random_rotation(rng):
-    q = rng.normal(size=4)
-    return trajectory.quaternion_to_matrix(*q)
+def quaternion_to_matrix(q):
+    """Rotation matrix of a unit quaternion (qx, qy, qz, qw)."""
+    x, y, z, w = q
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def quaternion_product(a, b):
+    """Hamilton product a * b of quaternions (qx, qy, qz, qw): the rotation b, then a."""
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return np.array([aw * bx + ax * bw + ay * bz - az * by, aw * by - ax * bz + ay * bw + az * bx,
+                     aw * bz + ax * by - ay * bx + az * bw, aw * bw - ax * bx - ay * by - az * bz])
 
 
 def random_trajectory(rng, count):
-    """`count` poses along a wavy 3D path with random orientations, stamps at 30 Hz."""
+    """`count` poses along a wavy 3D path with random orientations, stamps at 30 Hz: stamps [N] s,
+    positions [N,3] m, unit quaternions [N,4] (qx, qy, qz, qw)."""
     stamps = 1548339829.5 + np.arange(count) / 30.0
-    poses = np.tile(np.eye(4), (count, 1, 1))
     s = np.linspace(0.0, 2.0, count)
-    poses[:, :3, 3] = np.stack([s, np.sin(3 * s), 0.3 * np.cos(2 * s)], axis=1)
-    for pose in poses:
-        pose[:3, :3] = random_rotation(rng)
-    return stamps, poses
+    positions = np.stack([s, np.sin(3 * s), 0.3 * np.cos(2 * s)], axis=1)
+    quaternions = rng.normal(size=(count, 4))
+    quaternions /= np.linalg.norm(quaternions, axis=1)[:, None]
+    return stamps, positions, quaternions
 
 
-class TrajectoryTest(TempDirTest):
-    def test_quaternion_round_trip(self):
-        rng = np.random.RandomState(7)
-        for _ in range(20):
-            rotation = random_rotation(rng)
-            back = trajectory.quaternion_to_matrix(*trajectory.matrix_to_quaternion(rotation))
-            np.testing.assert_allclose(back, rotation, atol=1e-12)
+def move_rigidly(positions, quaternions, motion_q, motion_t):
+    """Poses (positions, quaternions) left-multiplied by the rigid motion (motion_q, motion_t):
+    the same trajectory expressed in another world frame."""
+    motion_q = np.asarray(motion_q, dtype=float) / np.linalg.norm(motion_q)
+    moved_positions = positions.dot(quaternion_to_matrix(motion_q).T) + motion_t
+    moved_quaternions = np.array([quaternion_product(motion_q, q) for q in quaternions])
+    return moved_positions, moved_quaternions
 
-    def test_associate_is_greedy_nearest_within_window(self):
-        index_a, index_b = trajectory.associate([1.0, 1.01, 2.0, 3.0], [1.005, 1.012, 2.5], 0.02)
-        self.assertEqual((index_a.tolist(), index_b.tolist()), ([0, 1], [0, 1]))
-        index_a, index_b = trajectory.associate([1.0, 1.004], [1.003], 0.02)
-        self.assertEqual((index_a.tolist(), index_b.tolist()), ([1], [0]))
 
-    def test_umeyama_recovers_rigid_transform(self):
-        rng = np.random.RandomState(3)
-        points = rng.uniform(-2, 2, size=(50, 3))
-        truth = np.eye(4)
-        truth[:3, :3] = random_rotation(rng)
-        truth[:3, 3] = [0.5, -1.0, 2.0]
-        moved = points.dot(truth[:3, :3].T) + truth[:3, 3]
-        np.testing.assert_allclose(trajectory.umeyama_se3(points, moved), truth, atol=1e-10)
+def write_tum(path, stamps, positions, quaternions):
+    """TUM trajectory file: `timestamp tx ty tz qx qy qz qw` per pose."""
+    with open(path, "w") as handle:
+        handle.write("# timestamp tx ty tz qx qy qz qw\n")
+        for stamp, p, q in zip(stamps, positions, quaternions):
+            handle.write("%.6f %.6f %.6f %.6f %.7f %.7f %.7f %.7f\n" % ((stamp,) + tuple(p) +
+                                                                    tuple(q)))
 
-    def test_bonn_correction_is_the_documented_product(self):
-        rng = np.random.RandomState(11)
-        _, marker = random_trajectory(rng, 5)
-        camera = trajectory.bonn_marker_to_camera(marker)
-        t_m = trajectory.BONN_T_M_RAW.copy()
-        t_m[:3, :3] = trajectory.nearest_rotation(t_m[:3, :3])
-        ros = trajectory.BONN_T_ROS
-        for gt, cam in zip(marker, camera):
-            np.testing.assert_allclose(cam, ros.dot(gt).dot(ros).dot(t_m), atol=1e-12)
-            np.testing.assert_allclose(cam[:3, :3].dot(cam[:3, :3].T), np.eye(3), atol=1e-12)
-            self.assertAlmostEqual(np.linalg.det(cam[:3, :3]), 1.0, places=12)
-        # The projection keeps T_m's rotation close to the raw (almost orthonormal) block.
-        self.assertLess(np.abs(t_m[:3, :3] - trajectory.BONN_T_M_RAW[:3, :3]).max(), 0.1)
+
+def run_dslam_eval(*args):
+    """Runs the built dslam_eval (found as plot_trajectory finds it); returns (exit code, stdout,
+    stderr)."""
+    process = subprocess.Popen([trajectory.find_dslam_eval()] + list(args),
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               universal_newlines=True)
+    out, err = process.communicate()
+    return process.returncode, out, err
+
+
+MOTION_Q = (0.1, -0.3, 0.2, 0.9)  # rotation of the test's rigid motion (normalised when used)
+MOTION_T = (3.0, -2.0, 1.0)  # [m] translation of the test's rigid motion
+# Bonn correction, docs/readme/eval.md: T_cam = T_ros T_gt T_ros T_m; T_ros has no translation,
+# so the camera position is R_ros (R_gt R_ros t_m + t_gt) whatever T_m's rotation block is.
+BONN_R_ROS = np.array([[-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]])
+BONN_T_M = np.array([0.0113, -0.0098, 0.0111])  # [m]
+
+
+class EvalToolTest(TempDirTest):
+    """dslam_eval's --save-aligned / --save-groundtruth and plot_trajectory, which runs it."""
+
+    def write(self, name, stamps, positions, quaternions):
+        path = os.path.join(self.tmp, name)
+        write_tum(path, stamps, positions, quaternions)
+        return path
+
+    def moved_copy(self, seed, count, stamp_offset=0.005):
+        """Ground truth and an estimate that is the same trajectory in another world frame."""
+        stamps, positions, quaternions = random_trajectory(np.random.RandomState(seed), count)
+        gt = self.write("gt.txt", stamps, positions, quaternions)
+        moved = move_rigidly(positions, quaternions, MOTION_Q, MOTION_T)
+        est = self.write("est.txt", stamps + stamp_offset, *moved)
+        return gt, est, (stamps, positions, quaternions)
+
+    def test_save_aligned_maps_a_moved_copy_onto_the_groundtruth(self):
+        gt, est, (stamps, positions, quaternions) = self.moved_copy(3, 50)
+        aligned, matched = os.path.join(self.tmp, "al.txt"), os.path.join(self.tmp, "gt_m.txt")
+        metrics = os.path.join(self.tmp, "eval.json")
+        code, _, err = run_dslam_eval("--groundtruth", gt, "--trajectory", est, "--json", metrics,
+                                      "--save-aligned", aligned, "--save-groundtruth", matched)
+        self.assertEqual(code, 0, err)
+        with open(metrics) as handle:
+            numbers = json.load(handle)
+        self.assertEqual((numbers["associated_poses"], numbers["estimated_poses"]), (50, 50))
+        self.assertLess(numbers["ate_rmse_m"], 1e-5)
+        rows, truth = np.loadtxt(aligned, ndmin=2), np.loadtxt(matched, ndmin=2)
+        np.testing.assert_allclose(rows[:, 0], stamps + 0.005, atol=1e-6)
+        np.testing.assert_allclose(rows[:, 1:4], positions, atol=1e-5)
+        dots = np.abs(np.sum(rows[:, 4:8] * quaternions, axis=1))  # q and -q: the same rotation
+        np.testing.assert_allclose(dots, np.ones(50), atol=1e-6)
+        np.testing.assert_allclose(truth[:, 0], stamps, atol=1e-6)
+        np.testing.assert_allclose(truth[:, 1:4], positions, atol=1e-6)
 
     def test_plot_of_rigidly_moved_copy_has_zero_ate(self):
-        stamps, poses = random_trajectory(np.random.RandomState(5), 60)
-        motion = np.eye(4)
-        motion[:3, :3] = trajectory.quaternion_to_matrix(0.1, -0.3, 0.2, 0.9)
-        motion[:3, 3] = [3.0, -2.0, 1.0]
-        gt_path = os.path.join(self.tmp, "gt.txt")
-        est_path = os.path.join(self.tmp, "est.txt")
+        gt, est, _ = self.moved_copy(5, 60)
         png = os.path.join(self.tmp, "plot.png")
-        trajectory.write_tum_trajectory(gt_path, stamps, poses)
-        trajectory.write_tum_trajectory(est_path, stamps + 0.005,
-                                        trajectory.transform_poses(motion, poses))
-        code, out, err = run_tool("plot_trajectory", "--groundtruth", gt_path, "--trajectory",
-                                  est_path, "--output", png, "--title", "test")
+        code, out, err = run_tool("plot_trajectory", "--groundtruth", gt, "--trajectory", est,
+                                  "--output", png, "--title", "test")
         self.assertEqual(code, 0, err)
         ate = float(re.search(r"ATE RMSE: ([0-9.e+-]+) m \(60 of 60", out).group(1))
         self.assertLess(ate, 1e-5)
+        self.assertIn("ground-truth correction: none", out)
         self.assertGreater(os.path.getsize(png), 10000)
         with open(png, "rb") as handle:
             self.assertEqual(handle.read(8), b"\x89PNG\r\n\x1a\n")
 
-    def test_ate_of_perturbed_copy_is_measured(self):
-        stamps, poses = random_trajectory(np.random.RandomState(9), 40)
-        noisy = poses.copy()
-        noisy[::2, 0, 3] += 0.01  # every other pose 1 cm off in x
-        result = trajectory.align_and_ate(stamps, poses, stamps, noisy)
-        self.assertGreater(result["ate_rmse"], 0.003)
-        self.assertLess(result["ate_rmse"], 0.0071)
+    def test_ate_of_a_noisy_moved_copy_is_the_noise(self):
+        stamps, positions, quaternions = random_trajectory(np.random.RandomState(9), 40)
+        gt = self.write("gt.txt", stamps, positions, quaternions)
+        noisy = positions.copy()
+        noisy[:, 0] += 0.005 * (-1.0) ** np.arange(40)  # +-5 mm in x, alternating
+        est = self.write("est.txt", stamps, *move_rigidly(noisy, quaternions, MOTION_Q, MOTION_T))
+        result = trajectory.evaluate(gt, est)
+        ate = result["metrics"]["ate_rmse_m"]
+        # Identity alignment leaves exactly 5 mm RMS and Umeyama minimises the sum of squares; the
+        # alternating offsets barely correlate with the smooth path, so little is absorbed.
+        self.assertLess(ate, 0.005 + 1e-6)
+        self.assertGreater(ate, 0.0045)
+        self.assertEqual(len(result["errors"]), 40)
+        self.assertAlmostEqual(float(np.sqrt(np.mean(result["errors"] ** 2))), ate, delta=2e-6)
+
+    def test_association_is_greedy_nearest_within_max_dt(self):
+        gt_stamps = np.array([1.003, 2.0, 3.0, 4.0])
+        est_stamps = np.array([1.0, 1.004, 2.01, 3.5, 4.0])
+        corners = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 1]], dtype=float)
+        identity = np.tile([0.0, 0.0, 0.0, 1.0], (5, 1))
+        gt = self.write("gt.txt", gt_stamps, corners[:4], identity[:4])
+        est = self.write("est.txt", est_stamps, corners, identity)
+        # 1.004 takes 1.003 (|dt| 1 ms beats 1.0's 3 ms); 3.5 has no partner within 20 ms.
+        result = trajectory.evaluate(gt, est)
+        self.assertEqual((result["metrics"]["associated_poses"],
+                          result["metrics"]["estimated_poses"]), (3, 5))
+        np.testing.assert_allclose(result["aligned"][0], [1.004, 2.01, 4.0], atol=1e-9)
+        np.testing.assert_allclose(result["matched"][0], [1.003, 2.0, 4.0], atol=1e-9)
+        narrow = trajectory.evaluate(gt, est, max_dt=0.005)
+        self.assertEqual(narrow["metrics"]["max_association_dt_s"], 0.005)
+        np.testing.assert_allclose(narrow["matched"][0], [1.003, 4.0], atol=1e-9)
+
+    def test_bonn_correction_moves_the_groundtruth_as_documented(self):
+        stamps, positions, quaternions = random_trajectory(np.random.RandomState(11), 30)
+        gt = self.write("gt.txt", stamps, positions, quaternions)
+        camera = os.path.join(self.tmp, "camera.yaml")
+        with open(camera, "w") as handle:
+            handle.write(CAMERA_YAML.replace("groundtruth_correction: none",
+                                             "groundtruth_correction: bonn"))
+        result = trajectory.evaluate(gt, gt, camera)
+        self.assertEqual(result["metrics"]["groundtruth_correction"], "bonn")
+        expected = np.array([BONN_R_ROS.dot(quaternion_to_matrix(q).dot(BONN_R_ROS.dot(BONN_T_M))
+                                            + p) for p, q in zip(positions, quaternions)])
+        np.testing.assert_allclose(result["groundtruth"][1], expected, atol=2e-6)
+        plain = trajectory.evaluate(gt, gt)
+        self.assertEqual(plain["metrics"]["groundtruth_correction"], "none")
+        np.testing.assert_allclose(plain["groundtruth"][1], positions, atol=1e-6)
+        code, out, err = run_tool("plot_trajectory", "--groundtruth", gt, "--trajectory", gt,
+                                  "--camera", camera, "--output", os.path.join(self.tmp, "b.png"))
+        self.assertEqual(code, 0, err)
+        self.assertIn("(30 of 30 estimated poses associated, ground-truth correction: bonn)", out)
+
+    def test_plot_reports_dslam_eval_errors(self):
+        stamps, positions, quaternions = random_trajectory(np.random.RandomState(1), 10)
+        gt = self.write("gt.txt", stamps, positions, quaternions)
+        est = self.write("est.txt", stamps + 100.0, positions, quaternions)
+        png = os.path.join(self.tmp, "none.png")
+        code, _, err = run_tool("plot_trajectory", "--groundtruth", gt, "--trajectory", est,
+                                "--output", png)
+        self.assertEqual(code, 1)
+        self.assertIn("no estimated pose has a ground-truth pose within", err)
+        self.assertFalse(os.path.exists(png))

@@ -13,15 +13,15 @@
 
 namespace dslam {
 
-/// Reading TUM-layout folders (rgb.txt, depth.txt, groundtruth.txt).
+/// Reading TUM-layout folders (rgb.txt, depth.txt, groundtruth.txt). Units, ranges and meanings
+/// of the fields are given in Fields() (printed by `dslam_config_doc`).
 struct DatasetConfig {
-  /// [s] colour and depth images are associated when their stamps differ by at most this.
   double association_max_dt_s = 0.02;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    v(FieldInfo{"association_max_dt_s", "s", 0.0, 1.0,
-                "max colour/depth timestamp difference for association", {}},
+    v(Field("association_max_dt_s", "s", 0.0, 1.0,
+            "max colour/depth timestamp difference for association"),
       s.association_max_dt_s);
   }
 };

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace dslam {
@@ -18,13 +19,30 @@ class ConfigError : public std::runtime_error {
 
 /// Static description of one parameter, passed to visitors beside a reference to its value.
 struct FieldInfo {
-  const char* name;   ///< key inside its section, e.g. "max_dt_s"
-  const char* unit;   ///< unit of the value ("m", "s", "px", "-" for dimensionless)
-  double min_value;   ///< inclusive lower bound (numeric fields)
-  double max_value;   ///< inclusive upper bound (numeric fields)
-  const char* doc;    ///< one-line description
+  const char* name;                  ///< key inside its section, e.g. "max_dt_s"
+  const char* unit;                  ///< unit of the value ("m", "s", "px", "-" for dimensionless)
+  double min_value;                  ///< inclusive lower bound (numeric fields)
+  double max_value;                  ///< inclusive upper bound (numeric fields)
+  const char* doc;                   ///< one-line description
   std::vector<std::string> choices;  ///< allowed values for string fields (empty: any)
 };
+
+/// Description of a numeric field: `unit` of the value ("-" for dimensionless), inclusive bounds
+/// [min_value, max_value] in that unit, one-line `doc`.
+inline FieldInfo Field(const char* name, const char* unit, double min_value, double max_value,
+                       const char* doc) {
+  return FieldInfo{name, unit, min_value, max_value, doc, {}};
+}
+
+/// Description of a bool field (unit "-", bounds [0, 1]).
+inline FieldInfo Flag(const char* name, const char* doc) {
+  return FieldInfo{name, "-", 0, 1, doc, {}};
+}
+
+/// Description of a string field whose value must be one of `choices` (unit "-", bounds 0).
+inline FieldInfo Choice(const char* name, std::vector<std::string> choices, const char* doc) {
+  return FieldInfo{name, "-", 0, 0, doc, std::move(choices)};
+}
 
 /// Name of a field's value type in error messages ("bool", "integer", "number", "string").
 template <typename T>

@@ -1,11 +1,14 @@
 #pragma once
 // RGB-D map-point measurement y_ik and its 3x3 covariance C_ik (paper Sec. V-A, Eq. rgbd_yik,
-// Eq. mix_gauss and the C_ik equations), with the sigma_a^2 / sigma_b^2 typo of the paper fixed as
-// in Dryanovski et al. (ICRA 2013), see /work/shared/reference/field-notes.md.
+// Eq. mix_gauss and the C_ik equations). The paper prints (u-c_u)(v-c_v) in sigma_a^2 and
+// sigma_b^2; the variance of a = (u-c_u) c / f_u is [(u-c_u)^2 sigma_c^2 + sigma_u^2 (mu_c^2 +
+// sigma_c^2)] / f_u^2 (and (v-c_v)^2 for b), as in the paper's source, Dryanovski et al. (ICRA
+// 2013); PointCovariance computes that.
 
 #include <optional>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
 #include "dslam/core/camera.h"
@@ -20,6 +23,10 @@ struct PointMeasurement {
   double depth_mean_m = 0.0;   ///< [m] mu_c, mean of the 3x3 Gaussian mixture
   double depth_sigma_m = 0.0;  ///< [m] sigma_c, standard deviation of the mixture
 };
+
+/// The measurement expressed in another frame: y' = T y, C' = R C R^T (R = T's rotation), e.g.
+/// T_world_camera for a camera-frame measurement in the world frame.
+PointMeasurement Transformed(const PointMeasurement& m, const Eigen::Isometry3d& T);
 
 /// Khoshelham-style depth noise sigma_d = a d^2 + b [m] for a depth d [m].
 double DepthSigma(double depth_m, const DepthNoiseConfig& config);

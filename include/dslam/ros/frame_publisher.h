@@ -11,9 +11,9 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <Eigen/Geometry>
 
-#include "dslam/core/frame_result.h"
 #include "dslam/core/rgbd_frame.h"
 #include "dslam/ros/node_config.h"
+#include "dslam/tracking/frame_result.h"
 
 namespace dslam {
 namespace ros_layer {

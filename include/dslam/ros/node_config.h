@@ -9,34 +9,35 @@
 namespace dslam {
 namespace ros_layer {
 
-/// Top-level private parameters of dslam/OdometryNodelet (~odom_frame, ~queue_size, ...).
+/// Top-level private parameters of dslam/OdometryNodelet (~odom_frame, ~queue_size, ...). Each
+/// field's unit, range and meaning are given in Fields() (the one source; the README's table of the
+/// ROS layer's parameters lists the same).
 struct NodeConfig {
-  std::string odom_frame = "odom";       ///< fixed frame of odometry, path, clouds (REP 105)
-  std::string base_frame = "base_link";  ///< robot body frame, x forward z up (REP 103)
-  /// Optical frame of the colour camera; empty: the colour image's header frame id.
+  std::string odom_frame = "odom";
+  std::string base_frame = "base_link";
   std::string camera_frame = "";
-  bool publish_tf = true;   ///< broadcast odom -> base_frame (and the default mount)
-  bool exact_sync = false;  ///< ExactTime instead of ApproximateTime synchronisation
-  int queue_size = 10;      ///< [-] message_filters queue length per input
-  /// camera.yaml with calibrated intrinsics; empty: use camera_info.
+  bool publish_tf = true;
+  bool exact_sync = false;
+  int queue_size = 10;
   std::string camera_yaml = "";
-  int path_max_poses = 10000;  ///< [-] poses kept in the published path
-  double tf_wait_s = 0.0;      ///< [s] wait for base_frame <- camera frame at the first frame
+  int path_max_poses = 10000;
+  double tf_wait_s = 0.0;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    v(FieldInfo{"odom_frame", "-", 0, 0, "fixed odometry frame (REP 105)", {}}, s.odom_frame);
-    v(FieldInfo{"base_frame", "-", 0, 0, "robot base frame, x forward, z up", {}}, s.base_frame);
-    v(FieldInfo{"camera_frame", "-", 0, 0, "camera optical frame; empty: image frame id", {}},
+    v(Field("odom_frame", "-", 0, 0, "fixed frame of odometry, path and clouds (REP 105)"),
+      s.odom_frame);
+    v(Field("base_frame", "-", 0, 0, "robot body frame, x forward, z up (REP 103)"), s.base_frame);
+    v(Field("camera_frame", "-", 0, 0, "colour camera optical frame; empty: image frame id"),
       s.camera_frame);
-    v(FieldInfo{"publish_tf", "-", 0, 1, "broadcast odom -> base_frame TF", {}}, s.publish_tf);
-    v(FieldInfo{"exact_sync", "-", 0, 1, "ExactTime instead of ApproximateTime", {}}, s.exact_sync);
-    v(FieldInfo{"queue_size", "-", 1, 1000, "synchroniser queue length", {}}, s.queue_size);
-    v(FieldInfo{"camera_yaml", "-", 0, 0, "camera.yaml intrinsics; empty: camera_info", {}},
+    v(Flag("publish_tf", "broadcast odom -> base_frame TF (and the default mount)"), s.publish_tf);
+    v(Flag("exact_sync", "ExactTime instead of ApproximateTime"), s.exact_sync);
+    v(Field("queue_size", "-", 1, 1000, "synchroniser queue length per input"), s.queue_size);
+    v(Field("camera_yaml", "-", 0, 0, "camera.yaml with calibrated intrinsics; empty: camera_info"),
       s.camera_yaml);
-    v(FieldInfo{"path_max_poses", "-", 1, 10000000, "poses kept in the path message", {}},
+    v(Field("path_max_poses", "-", 1, 10000000, "poses kept in the path message"),
       s.path_max_poses);
-    v(FieldInfo{"tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at start", {}},
+    v(Field("tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at the first frame"),
       s.tf_wait_s);
   }
 };

@@ -1,8 +1,9 @@
 #pragma once
 // dslam/OdometryNodelet: synchronizes colour, depth and camera_info (relative, remappable names
 // rgb/image, depth/image, rgb/camera_info), runs dslam::Odometry on a worker thread fed by a
-// two-frame bounded queue (it absorbs the bursts of the ApproximateTime synchronizer), and publishes through FramePublisher. Services: `reset`
-// (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
+// two-frame bounded queue (it absorbs the bursts of the ApproximateTime synchronizer), and
+// publishes through FramePublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory`
+// (dslam/SaveTrajectory).
 
 #include <atomic>
 #include <memory>
@@ -24,11 +25,11 @@
 
 #include "dslam/SaveTrajectory.h"
 #include "dslam/core/camera.h"
-#include "dslam/core/odometry.h"
-#include "dslam/core/trajectory_io.h"
+#include "dslam/io/trajectory_io.h"
 #include "dslam/ros/frame_publisher.h"
 #include "dslam/ros/latest_slot.h"
 #include "dslam/ros/node_config.h"
+#include "dslam/tracking/odometry.h"
 
 namespace dslam {
 namespace ros_layer {

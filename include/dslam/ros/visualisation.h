@@ -11,7 +11,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "dslam/core/frame_result.h"
+#include "dslam/tracking/frame_result.h"
 
 namespace dslam {
 namespace ros_layer {

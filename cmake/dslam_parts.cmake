@@ -1,0 +1,94 @@
+# dslam_part(): declares one part of dslam (a folder under src/, include/dslam/ and test/) and
+# checks the layering rule at configure time.
+#
+#   dslam_part(NAME [DEPENDS part...])
+#
+# Sets DSLAM_<NAME>_DEPENDS (the direct dependencies, as library targets dslam_<part>) and
+# DSLAM_<NAME>_ALLOWED (the part itself and every part below it, transitively), then adds
+# src/<NAME>/CMakeLists.txt (the library) and, with testing on, test/<NAME>/CMakeLists.txt.
+# The build fails when a file in src/<NAME>/ or include/dslam/<NAME>/ includes a header of a part
+# outside DSLAM_<NAME>_ALLOWED, or when a part other than `ros` includes a ROS header.
+
+set(DSLAM_ROS_HEADER_REGEX
+  "#include [<\"](ros|nodelet|pluginlib|tf2_ros|tf2_eigen|cv_bridge|message_filters|sensor_msgs|nav_msgs|geometry_msgs|visualization_msgs|std_msgs|std_srvs|pcl_conversions|dslam/[A-Z][A-Za-z]*\\.h)")
+
+function(dslam_check_includes name)
+  file(GLOB_RECURSE files CONFIGURE_DEPENDS
+    ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp ${PROJECT_SOURCE_DIR}/src/${name}/*.h
+    ${PROJECT_SOURCE_DIR}/include/dslam/${name}/*.h)
+  foreach(file ${files})
+    file(STRINGS ${file} lines REGEX "^#include [<\"]dslam/")
+    foreach(line ${lines})
+      if(line MATCHES "^#include [<\"]dslam/([a-z_]+)/")
+        list(FIND DSLAM_${name}_ALLOWED ${CMAKE_MATCH_1} found)
+        if(found EQUAL -1)
+          message(FATAL_ERROR "layering: ${file} includes part '${CMAKE_MATCH_1}', which part "
+                              "'${name}' may not use (allowed: ${DSLAM_${name}_ALLOWED})")
+        endif()
+      endif()
+    endforeach()
+    if(NOT name STREQUAL "ros")
+      file(STRINGS ${file} ros_lines REGEX "${DSLAM_ROS_HEADER_REGEX}")
+      if(ros_lines)
+        message(FATAL_ERROR "layering: ${file} (part '${name}') includes ROS: ${ros_lines}")
+      endif()
+    endif()
+  endforeach()
+endfunction()
+
+macro(dslam_part name)
+  cmake_parse_arguments(DSLAM_PART "" "" "DEPENDS" ${ARGN})
+  set(DSLAM_${name}_DEPENDS "")
+  set(DSLAM_${name}_ALLOWED ${name})
+  foreach(dep ${DSLAM_PART_DEPENDS})
+    if(NOT DEFINED DSLAM_${dep}_ALLOWED)
+      message(FATAL_ERROR "part '${name}' depends on '${dep}', which is not declared before it")
+    endif()
+    list(APPEND DSLAM_${name}_DEPENDS dslam_${dep})
+    list(APPEND DSLAM_${name}_ALLOWED ${DSLAM_${dep}_ALLOWED})
+  endforeach()
+  list(REMOVE_DUPLICATES DSLAM_${name}_ALLOWED)
+  dslam_check_includes(${name})
+  add_subdirectory(src/${name})
+  if(CATKIN_ENABLE_TESTING AND EXISTS ${PROJECT_SOURCE_DIR}/test/${name}/CMakeLists.txt)
+    add_subdirectory(test/${name})
+  endif()
+endmacro()
+
+# dslam_test(NAME SOURCES... LIBRARIES libs...): a gtest of the part's test folder, linked with
+# gtest_main; tests include their shared helpers as "support/..." and "<part>/...".
+function(dslam_test name)
+  cmake_parse_arguments(T "" "" "SOURCES;LIBRARIES" ${ARGN})
+  catkin_add_gtest(${name} ${T_SOURCES})
+  target_link_libraries(${name} ${T_LIBRARIES} gtest_main)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test)
+  target_compile_definitions(${name} PRIVATE DSLAM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endfunction()
+
+# dslam_library(PART SOURCES... [LINK libs...]): the part's library dslam_<PART>, linked with the
+# libraries of the parts it DEPENDS on (public) and LINK (external libraries), and installed.
+function(dslam_library part)
+  cmake_parse_arguments(L "" "" "SOURCES;LINK" ${ARGN})
+  add_library(dslam_${part} ${L_SOURCES})
+  target_include_directories(dslam_${part} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
+  target_link_libraries(dslam_${part} PUBLIC ${DSLAM_${part}_DEPENDS} ${L_LINK})
+  # Every symbol resolved at link time: a declaration defined in another part's library that
+  # this one does not link fails the build, not the nodelet's loading.
+  target_link_options(dslam_${part} PRIVATE -Wl,--no-undefined)
+  install(TARGETS dslam_${part}
+    ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+    LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+    RUNTIME DESTINATION ${CATKIN_GLOBAL_BIN_DESTINATION})
+endfunction()
+
+# dslam_tool(NAME SOURCES... LINK libs...): an executable NAME installed to the package's lib
+# folder (`rosrun dslam NAME`). Its target is NAME_main (dslam_eval and dslam_synth are also
+# the names of part libraries).
+function(dslam_tool name)
+  cmake_parse_arguments(E "" "" "SOURCES;LINK" ${ARGN})
+  add_executable(${name}_main ${E_SOURCES})
+  set_target_properties(${name}_main PROPERTIES OUTPUT_NAME ${name})
+  target_link_libraries(${name}_main ${E_LINK})
+  install(TARGETS ${name}_main RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+endfunction()

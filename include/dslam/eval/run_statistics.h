@@ -1,0 +1,52 @@
+#pragma once
+// Per-frame status rows (CSV) and run summaries of the offline runner and benchmarks.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "dslam/tracking/frame_result.h"
+
+namespace dslam {
+
+/// Header line of the status CSV (no newline).
+std::string StatusCsvHeader();
+
+/// One CSV row of a frame's state, counts and per-stage times [ms] (no newline).
+std::string StatusCsvRow(const FrameResult& result);
+
+/// Median of `values` (0 when empty).
+double Median(std::vector<double> values);
+
+/// Collects per-frame results for a summary.
+class RunSummary {
+ public:
+  /// Adds one frame.
+  void Add(const FrameResult& result);
+
+  int frames() const { return frames_; }               ///< frames processed
+  int frames_with_pose() const { return with_pose_; }  ///< frames with a reported pose
+  int lost_frames() const { return lost_; }            ///< frames in state kLost
+
+  /// Writes a table of per-stage medians [ms] and counts (median points in the graph, ...).
+  void PrintStages(std::ostream& out) const;
+
+  /// Median [ms] of the stage named "features", "matching", "initial_pose", "static_points",
+  /// "refine", "mapping" or "total" over the tracked frames.
+  double MedianMs(const std::string& stage) const;
+
+  /// Median number of points in the front-end graph over tracked frames.
+  double MedianGraphPoints() const;
+
+  /// [-] Share of matched-point observations labelled dynamic (unmarked), over all frames: on a
+  /// static scene, the share wrongly marked dynamic.
+  double LabelledDynamicShare() const;
+
+ private:
+  int frames_ = 0, with_pose_ = 0, lost_ = 0;
+  std::vector<StageTimes> times_;
+  std::vector<double> graph_points_;
+  long labelled_static_ = 0, labelled_dynamic_ = 0;
+};
+
+}  // namespace dslam

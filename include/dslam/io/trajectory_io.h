@@ -1,0 +1,32 @@
+#pragma once
+// Trajectories in TUM format: one pose per line, `timestamp tx ty tz qx qy qz qw`, the pose of the
+// colour camera's optical frame in the world (T_world_camera), stamps in seconds, '#' comments.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+namespace dslam {
+
+/// One timestamped pose T_world_camera.
+struct StampedPose {
+  double stamp_s = 0.0;                                              ///< [s]
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< camera -> world [m]
+};
+
+/// A time-ordered sequence of poses.
+using Trajectory = std::vector<StampedPose>;
+
+/// Reads a TUM trajectory file; quaternions are normalised, lines are sorted by stamp.
+/// Throws std::runtime_error naming the file and line on malformed input.
+Trajectory ReadTumTrajectory(const std::string& path);
+
+/// Writes `trajectory` in TUM format (stamps with 6 decimals, positions 6, quaternions 7),
+/// with a header comment. Throws std::runtime_error when the file cannot be written.
+void WriteTumTrajectory(const std::string& path, const Trajectory& trajectory);
+
+/// Formats one pose as a TUM line without newline.
+std::string FormatTumLine(const StampedPose& pose);
+
+}  // namespace dslam

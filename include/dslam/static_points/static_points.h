@@ -1,0 +1,64 @@
+#pragma once
+// Static point determination (paper Sec. IV and V-A, Algorithm 1): Delaunay graph over the
+// points -> inconsistent edge culling with point-correlation measurements -> connected
+// components -> the component with the largest convex-hull volume is static.
+// The caller chooses the points and frames: the front end (front_end_static_points.h) passes
+// the current frame's tracked points with their measurements in the current frame and in
+// keyframes spread over the window; a back end would pass the window's marked points with all
+// their keyframe observations (Algorithm 1).
+
+#include <vector>
+
+#include "dslam/core/config.h"
+#include "dslam/static_points/correlation_problem.h"
+#include "dslam/static_points/point_graph.h"
+#include "dslam/static_points/segmentation.h"
+
+namespace dslam {
+
+/// Wall-clock time per step [ms] and counts of one DetermineStaticPoints call.
+struct StaticPointsStats {
+  double graph_ms = 0.0;       ///< [ms] Delaunay triangulation
+  double culling_ms = 0.0;     ///< [ms] measurements, solves and culling
+  double components_ms = 0.0;  ///< [ms] connected components and volumes
+  double total_ms = 0.0;       ///< [ms] everything
+  int points = 0;              ///< [-] input points
+  int edges = 0;               ///< [-] graph edges
+  int culled_edges = 0;        ///< [-] inconsistent edges removed
+  int measurements = 0;        ///< [-] point-correlation measurements z_ijk
+  int rounds = 0;              ///< [-] least-squares rounds (0 for the direct test)
+  int components = 0;          ///< [-] connected components (singletons included)
+  int static_points = 0;       ///< [-] points labelled kStatic
+  int dynamic_points = 0;      ///< [-] points labelled kDynamic
+  int isolated_points = 0;     ///< [-] points labelled kIsolated
+};
+
+/// Everything DetermineStaticPoints found.
+struct StaticPointsResult {
+  std::vector<PointLabel> labels;   ///< per input point
+  std::vector<int> component;       ///< component id per input point
+  std::vector<GraphEdge> edges;     ///< Delaunay graph
+  std::vector<bool> edge_kept;      ///< parallel to edges; false: inconsistent
+  std::vector<bool> edge_verified;  ///< parallel to edges; measured in >= min_edge_measurements
+  std::vector<Eigen::Vector3d> points_world;  ///< [m] optimised (least_squares) or input points
+  int static_component = -1;                  ///< -1: no static component (all kUndecided)
+  StaticPointsStats stats;                    ///< timings and counts
+};
+
+/// A component other than the static one is only evidence of motion when a tested edge joins it
+/// to the static component (and was culled: otherwise they would be one component). Components
+/// cut off merely because their edges were untested carry no evidence: their kDynamic/kIsolated
+/// labels become kUnverified. Without this, a static region the graph happens to cut off is
+/// labelled dynamic.
+void RequireEvidenceAgainstStatic(const std::vector<GraphEdge>& edges,
+                                  const std::vector<bool>& edge_verified,
+                                  const std::vector<int>& component, int static_component,
+                                  std::vector<PointLabel>* labels);
+
+/// Runs the three steps on `input` (points, fixed camera poses, observations). The graph is
+/// built over input.points_world; volumes use the optimised points. Throws
+/// std::invalid_argument on inconsistent indices.
+StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
+                                         const StaticPointsConfig& config);
+
+}  // namespace dslam

@@ -1,0 +1,66 @@
+#pragma once
+// Named scenarios of dslam_synth: the room, its furniture, the moving things, the camera motion and
+// the sensor model, with every parameter in a struct with units. Changing a scenario used by a
+// benchmark means re-running and re-reporting that benchmark (docs/readme/synth.md lists them).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dslam/synth/actors.h"
+#include "dslam/synth/camera_motion.h"
+#include "dslam/synth/geometry.h"
+
+namespace dslam {
+namespace synth {
+
+/// The room: an inward box with furniture along its walls. World frame z up, floor at z = 0.
+struct RoomParams {
+  Eigen::Vector3d min_corner_m{-3.0, -2.8, 0.0};  ///< [m]
+  Eigen::Vector3d max_corner_m{3.0, 3.0, 2.8};    ///< [m]
+  double furniture_jitter_m = 0.15;  ///< [m] seed-dependent shift of each furniture piece
+};
+
+/// Sensor model of the Kinect-like RGB-D camera.
+struct SensorParams {
+  int width = 640, height = 480;                ///< [px]
+  double fx = 525.0, fy = 525.0;                ///< [px]
+  double cx = 319.5, cy = 239.5;                ///< [px]
+  double depth_scale = 5000.0;                  ///< depth PNG units per metre
+  double depth_sigma_quadratic_per_m = 1.4e-3;  ///< [1/m] sigma_d = this * d^2 + constant
+  double depth_sigma_constant_m = 1.0e-3;       ///< [m]
+  double min_depth_m = 0.3;                     ///< [m] nearer surfaces read 0 (no depth)
+  double max_depth_m = 6.0;                     ///< [m] farther surfaces read 0
+  double edge_jump_m = 0.1;                     ///< [m] depth jump to a 4-neighbour = an edge
+  double edge_dropout_probability = 0.5;        ///< chance an edge pixel reads 0
+  double colour_sigma = 2.0;                    ///< [grey levels] colour noise per channel
+};
+
+/// Everything that defines a synthetic sequence.
+struct Scenario {
+  std::string name;
+  uint32_t seed = 1;              ///< textures, furniture jitter, sensor noise
+  int frames = 300;               ///< default number of frames
+  double fps = 30.0;              ///< [Hz]
+  double start_stamp_s = 1000.0;  ///< [s] stamp of frame 0
+  RoomParams room;
+  SensorParams sensor;
+  CameraMotionParams camera;
+  std::vector<WalkerParams> walkers;   ///< mask ids 1..W
+  std::vector<MovingBoxParams> boxes;  ///< mask ids W+1..W+B
+  std::vector<SheetParams> sheets;     ///< mask ids W+B+1..
+};
+
+/// Names accepted by MakeScenario(), with a one-line description each.
+std::vector<std::pair<std::string, std::string>> ScenarioNames();
+
+/// Builds the named scenario; throws std::invalid_argument for an unknown name.
+Scenario MakeScenario(const std::string& name, uint32_t seed);
+
+/// The static part of the scene (room and furniture), which depends on the seed only.
+SceneGeometry BuildStaticScene(const RoomParams& room, uint32_t seed);
+
+}  // namespace synth
+}  // namespace dslam

@@ -1,0 +1,88 @@
+#pragma once
+// What the odometry reports for each frame: state, pose, per-point labels, graph edges, counts
+// and per-stage times. Consumed by the offline runner (status CSV, segmentation score) and by
+// the ROS layer (odometry, clouds, markers, status message).
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dslam/tracking/map.h"
+
+namespace dslam {
+
+/// Tracking state of one frame.
+enum class TrackingState {
+  kInitialised,  ///< first frame (or first after a reset): map created, pose = last known pose
+  kTracking,     ///< pose from static points of the local map
+  kRecovered,    ///< static points too few; pose from a robust RANSAC over all matches
+  kLost,         ///< no trustworthy pose: none is reported
+};
+
+/// Lower-case name of a state ("tracking", ...), as written to the status CSV.
+const char* ToString(TrackingState state);
+
+/// A map point matched in the frame, with its label at the end of the frame.
+struct ObservedPoint {
+  PointId id = -1;
+  Eigen::Vector2d uv_raw = Eigen::Vector2d::Zero();   ///< [px] keypoint in the raw colour image
+  Eigen::Vector3d p_world = Eigen::Vector3d::Zero();  ///< [m] map point position, world frame
+  bool is_static = true;      ///< marked (not known to move) at the end of the frame
+  bool is_candidate = false;  ///< marked but not yet verified: not used for the pose
+};
+
+/// An edge of the front-end Delaunay graph, for visualisation.
+struct GraphEdgeView {
+  Eigen::Vector3d a_world, b_world;  ///< [m] endpoints, world frame
+  bool kept = true;                  ///< false: culled as inconsistent
+};
+
+/// Counts of one frame.
+struct FrameCounts {
+  int features = 0;             ///< ORB keypoints extracted
+  int features_with_depth = 0;  ///< of which with a valid depth measurement
+  int tracked = 0;              ///< map points matched in the frame
+  int static_points = 0;        ///< matched and marked at the end of the frame
+  int dynamic_points = 0;       ///< matched and unmarked at the end of the frame
+  int candidate_points = 0;     ///< of the static points: candidates not yet verified
+  int pose_inliers = 0;         ///< inliers of the final pose estimate
+  int graph_points = 0;         ///< points in the front-end graph
+  int graph_edges = 0;          ///< edges in the front-end graph
+  int culled_edges = 0;         ///< inconsistent edges removed
+  int map_points = 0;           ///< map size after the frame
+  int new_points = 0;           ///< map points created (keyframes only)
+};
+
+/// Wall-clock time of each stage [ms].
+struct StageTimes {
+  double features_ms = 0.0;       ///< ORB extraction and depth measurements
+  double matching_ms = 0.0;       ///< local-map projection and search
+  double initial_pose_ms = 0.0;   ///< motion-only BA with marked points (and RANSAC fallback)
+  double static_points_ms = 0.0;  ///< front-end static point determination
+  double refine_ms = 0.0;         ///< more matches and pose refinement with static points
+  double mapping_ms = 0.0;        ///< keyframe, new points, culling
+  double total_ms = 0.0;          ///< the whole ProcessFrame call
+};
+
+/// Everything the odometry reports about one frame.
+struct FrameResult {
+  int frame_index = 0;   ///< 0-based count of frames since the last reset
+  double stamp_s = 0.0;  ///< [s] stamp of the frame
+  TrackingState state = TrackingState::kLost;
+  bool has_pose = false;  ///< false when lost: T_world_camera is then meaningless
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< optical frame -> world
+  /// Information matrix of the pose (6x6, tangent order [rotation; translation] of a
+  /// perturbation applied on the left of T_camera_world; from the final pose solve).
+  Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
+  bool keyframe = false;  ///< a keyframe was made from this frame
+  bool reset = false;     ///< the odometry reset before this frame (e.g. time went backwards)
+  std::string message;    ///< why the frame was lost / reset, empty otherwise
+  FrameCounts counts;
+  StageTimes times;
+  std::vector<ObservedPoint> points;  ///< matched map points with their labels
+  std::vector<GraphEdgeView> edges;   ///< front-end graph (kept and culled edges)
+};
+
+}  // namespace dslam

@@ -1,0 +1,106 @@
+#pragma once
+// The odometry's local map: map points (marked = trusted static, unmarked = seen moving) and the
+// keyframes that created them. Single-threaded: owned and mutated by the tracking thread only.
+
+#include <cstdint>
+#include <deque>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "dslam/core/depth_uncertainty.h"
+
+namespace dslam {
+
+using PointId = int64_t;
+
+/// One 3D landmark. Positions are in the world frame [m].
+struct MapPoint {
+  PointId id = -1;                                          ///< assigned by Map::AddPoint
+  Eigen::Vector3d p_world = Eigen::Vector3d::Zero();        ///< position [m], world frame
+  Eigen::Matrix3d cov_world = Eigen::Matrix3d::Identity();  ///< position covariance [m^2]
+  cv::Mat descriptor;        ///< 1x32 CV_8U ORB descriptor of the observation that created it
+  int octave = 0;            ///< pyramid level of that observation
+  int created_feature = -1;  ///< index of that observation's feature in its frame
+  double reference_distance_m = 0.0;  ///< [m] camera distance of that observation
+  bool marked = true;  ///< not known to move: only marked points drive motion estimation
+  /// New and not yet verified static over a long enough baseline: matched (so it claims its
+  /// feature) but used for the pose only when verified points are too few.
+  bool candidate = false;
+  int created_frame = 0;    ///< frame index of creation
+  int last_seen_frame = 0;  ///< last frame index where it was matched
+  int times_visible = 0;    ///< frames where it projected into the image
+  int times_found = 0;      ///< frames where it was matched
+  int isolated_frames = 0;  ///< consecutive frames in which all its graph edges were inconsistent
+  int static_streak = 0;    ///< unmarked point: consecutive frames the front end found it static
+  int dynamic_frames = 0;   ///< frames labelled dynamic since it was last marked
+
+  /// Marked and verified: drives motion estimation.
+  bool IsVerifiedStatic() const { return marked && !candidate; }
+  /// Marked but not yet verified (new point): used for the pose only when verified ones are few.
+  bool IsCandidate() const { return marked && candidate; }
+};
+
+/// RGB-D measurements of map points in one frame, with that frame's pose: the raw material of
+/// point-correlation measurements z_ijk = y_ik - y_jk (paper Eq. meas_con_imp).
+struct FrameMeasurements {
+  Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();  ///< world -> optical frame
+  std::unordered_map<PointId, PointMeasurement> by_point;            ///< y and C per measured point
+};
+
+/// A keyframe: the pose of a frame that created map points.
+struct KeyFrame {
+  int id = -1;           ///< sequential keyframe id
+  int frame_index = 0;   ///< index of the frame it was made from
+  double stamp_s = 0.0;  ///< [s]
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+  std::vector<PointId> points;     ///< map points it observed (created or matched) when it was made
+  FrameMeasurements measurements;  ///< y and C of those points measured with depth in it
+};
+
+/// Map points and a window of recent keyframes.
+class Map {
+ public:
+  /// Adds a point, assigns and returns its id.
+  PointId AddPoint(MapPoint point);
+
+  /// The point with `id`, or nullptr when it was culled.
+  MapPoint* Find(PointId id);
+  const MapPoint* Find(PointId id) const;
+
+  /// Removes a point (no-op when absent).
+  void Erase(PointId id);
+
+  /// Appends a keyframe (its id is assigned) and drops the oldest beyond `max_keyframes`.
+  const KeyFrame& AddKeyFrame(KeyFrame keyframe, int max_keyframes);
+
+  /// Recent keyframes, oldest first.
+  const std::deque<KeyFrame>& keyframes() const { return keyframes_; }
+
+  /// Ids of the points observed by the keyframes in the window plus `extra`, plus verified static
+  /// points (marked, not candidates) last seen at or after `static_seen_since_frame` (a negative
+  /// value: none), without duplicates and without culled points: the local map tracking searches.
+  std::vector<PointId> LocalPoints(const std::vector<PointId>& extra,
+                                   int static_seen_since_frame = -1) const;
+
+  /// Removes points that are neither referenced by a window keyframe nor seen since
+  /// `oldest_frame_to_keep` (verified static points: since `static_seen_since_frame`, when it is
+  /// earlier), and points whose found/visible ratio fell below `min_found_ratio` after
+  /// `min_visible` sightings. Returns the number removed.
+  int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
+           int static_seen_since_frame = -1);
+
+  size_t size() const { return points_.size(); }  ///< number of map points
+  void Clear();                                   ///< removes every point and keyframe
+
+ private:
+  std::unordered_map<PointId, MapPoint> points_;
+  std::deque<KeyFrame> keyframes_;
+  PointId next_point_id_ = 0;
+  int next_keyframe_id_ = 0;
+};
+
+}  // namespace dslam

@@ -1,0 +1,91 @@
+#pragma once
+// The dslam front end: ORB tracking against a local map in which only trusted static (marked)
+// points drive motion estimation, with front-end static point determination every frame.
+
+#include <memory>
+#include <vector>
+
+#include "dslam/core/config.h"
+#include "dslam/core/rgbd_frame.h"
+#include "dslam/tracking/frame_result.h"
+#include "dslam/tracking/front_end_static_points.h"
+#include "dslam/tracking/map.h"
+#include "dslam/tracking/motion_model.h"
+#include "dslam/tracking/pose_estimation.h"
+
+namespace dslam {
+
+/// Processes RGB-D frames one at a time. Not thread-safe: call from one thread.
+class Odometry {
+ public:
+  /// Throws ConfigError when `config` is invalid.
+  explicit Odometry(const Config& config);
+
+  /// Runs the pipeline of the paper's front end on one frame (see ProcessFrame in odometry.cpp).
+  /// A frame older than the previous one (a bag played in a loop) resets the odometry first.
+  /// Throws std::invalid_argument when frame.Check() fails.
+  FrameResult ProcessFrame(const RgbdFrame& frame);
+
+  /// Forgets the map and the motion model; the next frame initialises at the world origin.
+  void Reset();
+
+  const Map& map() const { return map_; }  ///< the local map (for visualisation)
+  const Config& config() const { return config_; }
+
+ private:
+  /// Working state of the frame being processed.
+  struct Current {
+    const RgbdFrame* frame = nullptr;
+    FrameFeatures features;
+    std::vector<bool> feature_taken;
+    std::vector<PointId> local_points;  ///< the local map searched in this frame
+    std::vector<PointMatch> matches;
+    std::vector<bool> excluded;  ///< per match: left out of the refined pose (isolated/dynamic)
+    Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
+    PoseResult pose;
+    FrontEndStaticPoints static_points;
+    bool from_robust_pose = false;
+  };
+
+  bool BeginFrame(const RgbdFrame& frame, FrameResult* result);
+  FrameResult Initialise(Current* current, FrameResult result);
+  void MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world, bool wide);
+  PoseResult SolvePoseFromStaticPoints(const Current& current,
+                                       const Eigen::Isometry3d& T_camera_world) const;
+  void MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
+                                 double radius_px);
+  /// Pose from static points (verified, else marked) starting at `T_camera_world_guess`; when
+  /// they give too few inliers, a RANSAC pose over all matches. Sets current->pose and, on
+  /// success, current->T_camera_world. False: too few inliers either way.
+  bool SolvePose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
+                 uint32_t ransac_seed);
+  bool EnoughInliers(const PoseResult& pose) const;  ///< success and >= min_static_inliers
+  std::vector<const FrameMeasurements*> FrontEndReferenceFrames() const;
+  void RunFrontEndStaticPoints(Current* current, FrameResult* result);
+  bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
+  void UpdateMatchedPoints(const Current& current);
+  bool NeedKeyFrame(int static_matches) const;
+  /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
+  int StaticSeenSinceFrame() const;
+  int MakeKeyFrame(const Current& current);
+  void FuseStaticPoints(const Current& current);
+  FrameMeasurements MeasurementsOf(const Current& current,
+                                   const std::vector<PointId>& created) const;
+  FrameResult Lost(Current* current, FrameResult result, const char* why);
+  void Summarise(const Current& current, FrameResult* result) const;
+
+  Config config_;
+  Map map_;
+  ConstantVelocityModel motion_;
+  FrameMeasurements previous_;         ///< measurements of the previous tracked frame
+  std::vector<PointId> last_tracked_;  ///< points matched in the previous tracked frame
+  bool initialised_ = false;
+  bool have_stamp_ = false;
+  double last_stamp_s_ = 0.0;
+  int frame_index_ = 0;
+  int lost_frames_ = 0;
+  int last_keyframe_frame_ = 0;
+  int last_keyframe_static_ = 0;
+};
+
+}  // namespace dslam

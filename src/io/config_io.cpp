@@ -1,0 +1,173 @@
+#include "dslam/io/config_io.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+#include <type_traits>
+
+namespace dslam {
+namespace {
+
+/// Visitor that reads each field of one section from a YAML map and records the keys it used.
+class YamlReader {
+ public:
+  YamlReader(const YAML::Node& node, std::string prefix, std::set<std::string>* used)
+      : node_(node), prefix_(std::move(prefix)), used_(used) {}
+
+  template <typename T>
+  void operator()(const FieldInfo& info, T& value) const {
+    const YAML::Node field = node_[info.name];
+    if (!field) return;
+    used_->insert(info.name);
+    try {
+      value = field.as<T>();
+    } catch (const YAML::Exception&) {
+      throw ConfigError(prefix_ + info.name + ": cannot read '" + YAML::Dump(field) + "' as " +
+                        FieldTypeName<T>());
+    }
+  }
+
+ private:
+  const YAML::Node& node_;
+  std::string prefix_;
+  std::set<std::string>* used_;
+};
+
+/// Visitor that appends one Markdown table row per field.
+class MarkdownWriter {
+ public:
+  MarkdownWriter(std::string prefix, std::ostringstream* out)
+      : prefix_(std::move(prefix)), out_(out) {}
+
+  template <typename T>
+  void operator()(const FieldInfo& info, const T& value) const {
+    *out_ << "| `" << prefix_ << info.name << "` | " << Value(value) << " | " << info.unit << " | "
+          << Range(info, value) << " | " << info.doc << " |\n";
+  }
+
+ private:
+  static std::string Value(bool v) { return v ? "true" : "false"; }
+  static std::string Value(const std::string& v) { return "`" + v + "`"; }
+  template <typename T>
+  static std::string Value(const T& v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+  static std::string Range(const FieldInfo& info, const std::string&) {
+    std::string r;
+    for (const auto& c : info.choices) r += (r.empty() ? "" : ", ") + c;
+    return r;
+  }
+  static std::string Range(const FieldInfo&, bool) { return ""; }
+  template <typename T>
+  static std::string Range(const FieldInfo& info, const T&) {
+    std::ostringstream s;
+    s << "[" << (info.min_value == kNoMin ? std::string("-inf") : Value(info.min_value)) << ", "
+      << (info.max_value == kNoMax ? std::string("inf") : Value(info.max_value)) << "]";
+    return s.str();
+  }
+  std::string prefix_;
+  std::ostringstream* out_;
+};
+
+/// Visitor that appends one `key: value  # [unit] doc` line per field.
+class YamlWriter {
+ public:
+  explicit YamlWriter(std::ostringstream* out) : out_(out) {}
+
+  template <typename T>
+  void operator()(const FieldInfo& info, const T& value) const {
+    std::ostringstream line;
+    line << "  " << info.name << ": " << Value(value);
+    std::string text = line.str();
+    text.resize(std::max<size_t>(text.size() + 1, 36), ' ');
+    *out_ << text << "# [" << info.unit << "] " << info.doc << "\n";
+  }
+
+ private:
+  static std::string Value(bool v) { return v ? "true" : "false"; }
+  static std::string Value(const std::string& v) { return v; }
+  template <typename T>
+  static std::string Value(const T& v) {
+    YAML::Emitter emitter;
+    emitter << v;
+    return emitter.c_str();
+  }
+  std::ostringstream* out_;
+};
+
+void LoadConfigNode(const YAML::Node& root, Config* config) {
+  if (!root || root.IsNull()) return;
+  if (!root.IsMap()) throw ConfigError("config: top level must be a map of sections");
+  std::set<std::string> sections;
+  Config::Sections(*config, [&](const char* name, auto& section) {
+    const YAML::Node node = root[name];
+    if (!node) return;
+    sections.insert(name);
+    if (!node.IsMap()) throw ConfigError(std::string(name) + ": must be a map of parameters");
+    std::set<std::string> used;
+    using Section = std::decay_t<decltype(section)>;
+    Section::Fields(section, YamlReader(node, std::string(name) + ".", &used));
+    for (const auto& kv : node) {
+      const std::string key = kv.first.as<std::string>();
+      if (!used.count(key))
+        throw ConfigError(std::string(name) + "." + key + ": unknown parameter");
+    }
+  });
+  for (const auto& kv : root) {
+    const std::string key = kv.first.as<std::string>();
+    if (!sections.count(key)) throw ConfigError(key + ": unknown config section");
+  }
+  config->Validate();
+}
+
+}  // namespace
+
+void LoadConfigYaml(const std::string& path, Config* config) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("config file " + path + ": " + e.what());
+  }
+  LoadConfigNode(root, config);
+}
+
+void LoadConfigYamlString(const std::string& yaml_text, Config* config) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(std::string("config text: ") + e.what());
+  }
+  LoadConfigNode(root, config);
+}
+
+std::string DescribeConfigYaml(const Config& config) {
+  std::ostringstream out;
+  out << "# dslam parameters: every section and key with its default value, unit and meaning.\n"
+         "# Generated by `rosrun dslam dslam_config_doc --yaml`; a test keeps it in step with the\n"
+         "# code. Copy the keys you change into your own file and pass it with --config or as\n"
+         "# the ROS parameter namespace.\n";
+  Config::Sections(config, [&](const char* name, const auto& section) {
+    using Section = std::decay_t<decltype(section)>;
+    out << name << ":\n";
+    Section::Fields(section, YamlWriter(&out));
+  });
+  return out.str();
+}
+
+std::string DescribeConfigMarkdown(const Config& defaults) {
+  std::ostringstream out;
+  out << "| parameter | default | unit | range | meaning |\n|---|---|---|---|---|\n";
+  Config::Sections(defaults, [&](const char* name, const auto& section) {
+    using Section = std::decay_t<decltype(section)>;
+    Section::Fields(section, MarkdownWriter(std::string(name) + ".", &out));
+  });
+  return out.str();
+}
+
+}  // namespace dslam

@@ -1,0 +1,127 @@
+#include "dslam/io/dataset_io.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "dslam/core/depth_conversion.h"
+#include "dslam/io/stamp_association.h"
+
+namespace dslam {
+namespace {
+
+double RequiredNumber(const YAML::Node& root, const std::string& key, const std::string& path) {
+  const YAML::Node node = root[key];
+  if (!node) throw std::runtime_error(path + ": missing key '" + key + "'");
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw std::runtime_error(path + ": key '" + key + "' is not a number");
+  }
+}
+
+double OptionalNumber(const YAML::Node& root, const std::string& key, double fallback,
+                      const std::string& path) {
+  return root[key] ? RequiredNumber(root, key, path) : fallback;
+}
+
+}  // namespace
+
+CameraYaml LoadCameraYaml(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error("cannot read camera file " + path + ": " + e.what());
+  }
+  Distortion d;
+  d.k1 = OptionalNumber(root, "k1", 0.0, path);
+  d.k2 = OptionalNumber(root, "k2", 0.0, path);
+  d.p1 = OptionalNumber(root, "p1", 0.0, path);
+  d.p2 = OptionalNumber(root, "p2", 0.0, path);
+  d.k3 = OptionalNumber(root, "k3", 0.0, path);
+  CameraYaml out;
+  try {
+    out.camera = std::make_shared<PinholeCamera>(
+        static_cast<int>(RequiredNumber(root, "width", path)),
+        static_cast<int>(RequiredNumber(root, "height", path)), RequiredNumber(root, "fx", path),
+        RequiredNumber(root, "fy", path), RequiredNumber(root, "cx", path),
+        RequiredNumber(root, "cy", path), d);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  out.depth_scale = OptionalNumber(root, "depth_scale", 5000.0, path);
+  if (!(out.depth_scale > 0.0)) throw std::runtime_error(path + ": depth_scale must be > 0");
+  const std::string correction =
+      root["groundtruth_correction"] ? root["groundtruth_correction"].as<std::string>() : "none";
+  if (correction == "bonn") {
+    out.groundtruth_correction = GroundTruthCorrection::kBonn;
+  } else if (correction != "none") {
+    throw std::runtime_error(path + ": groundtruth_correction must be none or bonn, got '" +
+                             correction + "'");
+  }
+  return out;
+}
+
+std::vector<StampedFile> ReadFileList(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open file list " + path);
+  std::vector<StampedFile> files;
+  std::string line;
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    StampedFile f;
+    if (!(fields >> f.stamp_s >> f.path)) {
+      throw std::runtime_error(path + ":" + std::to_string(line_number) +
+                               ": expected 'stamp file'");
+    }
+    files.push_back(f);
+  }
+  return files;
+}
+
+std::vector<AssociatedPair> AssociateByStamp(const std::vector<StampedFile>& colour,
+                                             const std::vector<StampedFile>& depth,
+                                             double max_dt_s) {
+  std::vector<double> colour_stamps, depth_stamps;
+  for (const StampedFile& f : colour) colour_stamps.push_back(f.stamp_s);
+  for (const StampedFile& f : depth) depth_stamps.push_back(f.stamp_s);
+  std::vector<AssociatedPair> pairs;
+  for (const auto& [c, d] : AssociateStamps(colour_stamps, depth_stamps, max_dt_s)) {
+    pairs.push_back({colour[c], depth[d]});
+  }
+  return pairs;
+}
+
+TumDataset::TumDataset(const std::string& folder, const std::string& camera_yaml_path,
+                       double association_max_dt_s)
+    : folder_(folder) {
+  camera_yaml_ =
+      LoadCameraYaml(camera_yaml_path.empty() ? folder + "/camera.yaml" : camera_yaml_path);
+  pairs_ = AssociateByStamp(ReadFileList(folder + "/rgb.txt"), ReadFileList(folder + "/depth.txt"),
+                            association_max_dt_s);
+}
+
+RgbdFrame TumDataset::LoadFrame(size_t index) const {
+  const AssociatedPair& pair = pairs_.at(index);
+  RgbdFrame frame;
+  frame.stamp_s = pair.colour.stamp_s;
+  frame.camera = camera_yaml_.camera;
+  frame.colour = cv::imread(folder_ + "/" + pair.colour.path, cv::IMREAD_COLOR);
+  if (frame.colour.empty()) {
+    throw std::runtime_error("cannot read colour image " + folder_ + "/" + pair.colour.path);
+  }
+  frame.depth_m = ReadDepthPng(folder_ + "/" + pair.depth.path, camera_yaml_.depth_scale);
+  return frame;
+}
+
+}  // namespace dslam

@@ -1,0 +1,98 @@
+// The named scenarios of dslam_synth (scenario.h). Every number here is listed in
+// docs/readme/synth.md; change both together.
+#include "dslam/synth/scenario.h"
+
+#include <stdexcept>
+
+namespace dslam {
+namespace synth {
+namespace {
+
+WalkerParams Walker(std::vector<Eigen::Vector2d> path, double start_offset_m, uint32_t look) {
+  WalkerParams w;
+  w.path_m = std::move(path);
+  w.start_offset_m = start_offset_m;
+  w.look_seed = look;
+  return w;
+}
+
+/// Two walkers on loops 1-2.5 m in front of the base camera, crossing its view (walking*).
+std::vector<WalkerParams> TwoWalkers(uint32_t seed) {
+  WalkerParams a = Walker({{-0.7, -0.2}, {0.7, -0.2}, {0.3, -0.75}}, 0.0, seed * 2 + 1);
+  a.dwell_s = {0.0, 0.0, 1.5};
+  WalkerParams b = Walker({{0.9, 0.4}, {-0.9, 0.4}, {-0.3, -0.6}}, 1.0, seed * 2 + 2);
+  b.dwell_s = {0.0, 0.0, 1.0};
+  return {a, b};
+}
+
+Scenario Base(const std::string& name, uint32_t seed, CameraMotionKind motion) {
+  Scenario s;
+  s.name = name;
+  s.seed = seed;
+  s.camera.kind = motion;
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> ScenarioNames() {
+  return {{"static_room", "textured room, nothing moves, camera xyz"},
+          {"walking", "two walkers covering much of the view, camera xyz"},
+          {"walking_static", "the two walkers of 'walking', static camera (mm jitter)"},
+          {"walking_halfsphere", "the two walkers of 'walking', camera on a half sphere"},
+          {"close_person", "one walker stopping 0.7 m in front of the camera, camera small xyz"},
+          {"slow_box", "two boxes sliding 3 and 1.5 mm per frame, camera xyz"},
+          {"nonrigid_sheet", "a hanging sheet deformed by travelling waves, camera xyz"}};
+}
+
+Scenario MakeScenario(const std::string& name, uint32_t seed) {
+  if (name == "static_room") return Base(name, seed, CameraMotionKind::kXyz);
+  if (name == "walking" || name == "walking_static" || name == "walking_halfsphere") {
+    const CameraMotionKind motion = name == "walking"          ? CameraMotionKind::kXyz
+                                    : name == "walking_static" ? CameraMotionKind::kStatic
+                                                               : CameraMotionKind::kHalfsphere;
+    Scenario s = Base(name, seed, motion);
+    s.walkers = TwoWalkers(seed);
+    return s;
+  }
+  if (name == "close_person") {
+    Scenario s = Base(name, seed, CameraMotionKind::kXyz);
+    s.camera.xyz_amplitude_m = {0.1, 0.05, 0.1};
+    WalkerParams w = Walker({{1.8, 0.9}, {0.0, -1.1}, {-1.8, 0.9}}, 0.5, seed * 2 + 1);
+    w.dwell_s = {0.0, 4.0, 0.0};
+    s.walkers = {w};
+    return s;
+  }
+  if (name == "slow_box") {
+    Scenario s = Base(name, seed, CameraMotionKind::kXyz);
+    MovingBoxParams a;
+    a.size_m = {0.6, 0.6, 0.6};
+    a.start_m = {-1.0, 0.3, 0.3};
+    a.end_m = {1.0, 0.3, 0.3};
+    a.speed_mps = 0.09;  // 3 mm per frame
+    a.look_seed = seed * 2 + 1;
+    MovingBoxParams b;
+    b.size_m = {0.4, 0.4, 0.4};
+    b.start_m = {0.8, 1.0, 0.2};
+    b.end_m = {-0.4, 1.0, 0.2};
+    b.speed_mps = 0.045;  // 1.5 mm per frame
+    b.yaw_rate_dps = 3.0;
+    b.look_seed = seed * 2 + 2;
+    s.boxes = {a, b};
+    return s;
+  }
+  if (name == "nonrigid_sheet") {
+    Scenario s = Base(name, seed, CameraMotionKind::kXyz);
+    SheetParams sheet;
+    sheet.top_left_m = {-0.7, 0.8, 2.0};
+    sheet.width_m = 1.4;
+    sheet.height_m = 1.4;
+    sheet.look_seed = seed;
+    s.sheets = {sheet};
+    return s;
+  }
+  throw std::invalid_argument("unknown scenario '" + name + "'");
+}
+
+}  // namespace synth
+}  // namespace dslam

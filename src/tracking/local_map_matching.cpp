@@ -1,0 +1,57 @@
+#include "dslam/tracking/local_map_matching.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dslam/features/matching.h"
+
+namespace dslam {
+namespace {
+
+// Pyramid level at which a point seen at `distance_m` should appear: its creation level shifted
+// by the change of apparent size (ORB-SLAM2's PredictScale); -1 when unknown.
+int PredictOctave(const MapPoint& point, double distance_m, const std::vector<double>& scales) {
+  if (point.reference_distance_m <= 0.0 || scales.size() < 2) return -1;
+  const double shift = std::log(point.reference_distance_m / distance_m) / std::log(scales[1]);
+  const int octave = point.octave + static_cast<int>(std::lround(shift));
+  return std::clamp(octave, 0, static_cast<int>(scales.size()) - 1);
+}
+
+}  // namespace
+
+std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
+                                      const FrameFeatures& features, const PinholeCamera& camera,
+                                      const Eigen::Isometry3d& T_camera_world, double radius_px,
+                                      double min_depth_m, bool count_visible,
+                                      std::vector<bool>* feature_taken) {
+  std::vector<ProjectedPoint> projected;
+  std::vector<PointId> projected_ids;
+  for (PointId id : candidates) {
+    MapPoint* point = map->Find(id);
+    if (point == nullptr) continue;
+    const Eigen::Vector3d p_camera = T_camera_world * point->p_world;
+    if (p_camera.z() < min_depth_m) continue;
+    const Eigen::Vector2d uv = camera.Project(p_camera);
+    if (!camera.InImage(uv)) continue;
+    if (count_visible) ++point->times_visible;
+    ProjectedPoint candidate;
+    candidate.uv_ideal = uv;
+    candidate.descriptor = point->descriptor;
+    candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), features.octave_scale);
+    projected.push_back(candidate);
+    projected_ids.push_back(id);
+  }
+  ProjectionSearchOptions options;
+  options.radius_px = radius_px;
+  const std::vector<int> found = SearchByProjection(projected, features, options);
+  std::vector<PointMatch> matches;
+  for (size_t k = 0; k < found.size(); ++k) {
+    const int f = found[k];
+    if (f < 0 || (*feature_taken)[f]) continue;
+    (*feature_taken)[f] = true;
+    matches.push_back({projected_ids[k], f});
+  }
+  return matches;
+}
+
+}  // namespace dslam

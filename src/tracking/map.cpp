@@ -1,0 +1,80 @@
+#include "dslam/tracking/map.h"
+
+#include <algorithm>
+#include <unordered_set>
+
+namespace dslam {
+
+PointId Map::AddPoint(MapPoint point) {
+  point.id = next_point_id_++;
+  const PointId id = point.id;
+  points_.emplace(id, std::move(point));
+  return id;
+}
+
+MapPoint* Map::Find(PointId id) {
+  auto it = points_.find(id);
+  return it == points_.end() ? nullptr : &it->second;
+}
+
+const MapPoint* Map::Find(PointId id) const {
+  auto it = points_.find(id);
+  return it == points_.end() ? nullptr : &it->second;
+}
+
+void Map::Erase(PointId id) { points_.erase(id); }
+
+const KeyFrame& Map::AddKeyFrame(KeyFrame keyframe, int max_keyframes) {
+  keyframe.id = next_keyframe_id_++;
+  keyframes_.push_back(std::move(keyframe));
+  while (static_cast<int>(keyframes_.size()) > max_keyframes) keyframes_.pop_front();
+  return keyframes_.back();
+}
+
+std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
+                                      int static_seen_since_frame) const {
+  std::unordered_set<PointId> seen;
+  std::vector<PointId> local;
+  auto add = [&](PointId id) {
+    if (points_.count(id) && seen.insert(id).second) local.push_back(id);
+  };
+  for (const KeyFrame& kf : keyframes_) {
+    for (PointId id : kf.points) add(id);
+  }
+  for (PointId id : extra) add(id);
+  if (static_seen_since_frame < 0) return local;
+  for (const auto& [id, point] : points_) {
+    if (point.IsVerifiedStatic() && point.last_seen_frame >= static_seen_since_frame) add(id);
+  }
+  return local;
+}
+
+int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
+              int static_seen_since_frame) {
+  std::unordered_set<PointId> in_window;
+  for (const KeyFrame& kf : keyframes_) in_window.insert(kf.points.begin(), kf.points.end());
+  int removed = 0;
+  for (auto it = points_.begin(); it != points_.end();) {
+    const MapPoint& p = it->second;
+    const int keep_since = static_seen_since_frame >= 0 && p.IsVerifiedStatic()
+                               ? std::min(oldest_frame_to_keep, static_seen_since_frame)
+                               : oldest_frame_to_keep;
+    const bool stale = p.last_seen_frame < keep_since && !in_window.count(p.id);
+    const bool unreliable =
+        p.times_visible >= min_visible && p.times_found < min_found_ratio * p.times_visible;
+    if (stale || unreliable) {
+      it = points_.erase(it);
+      ++removed;
+    } else {
+      ++it;
+    }
+  }
+  return removed;
+}
+
+void Map::Clear() {
+  points_.clear();
+  keyframes_.clear();
+}
+
+}  // namespace dslam

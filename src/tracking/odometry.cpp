@@ -1,0 +1,145 @@
+#include "dslam/tracking/odometry.h"
+
+#include <stdexcept>
+
+#include "dslam/core/stopwatch.h"
+#include "dslam/tracking/map_point_creation.h"
+
+namespace dslam {
+
+Odometry::Odometry(const Config& config) : config_(config) { config_.Validate(); }
+
+void Odometry::Reset() {
+  map_.Clear();
+  motion_.Reset();
+  previous_ = FrameMeasurements();
+  last_tracked_.clear();
+  initialised_ = have_stamp_ = false;
+  frame_index_ = lost_frames_ = 0;
+}
+
+// The paper's front end (Sec. V), one frame.
+FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
+  const std::string problem = frame.Check();
+  if (!problem.empty()) throw std::invalid_argument("dslam: bad frame: " + problem);
+  Stopwatch total, stage;
+  FrameResult result;
+  result.reset = BeginFrame(frame, &result);
+  Current current;
+  current.frame = &frame;
+
+  // 1. ORB features with depth and the 3x3 measurement covariance (Sec. V-A).
+  current.features = ExtractFeatures(frame, config_.features, config_.depth_noise);
+  current.feature_taken.assign(current.features.features.size(), false);
+  result.times.features_ms = stage.Restart();
+  if (!initialised_) return Initialise(&current, std::move(result));
+
+  // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
+  const Eigen::Isometry3d T_camera_world_predicted = motion_.Predict(frame.stamp_s).inverse();
+  MatchLocalMapPoints(&current, T_camera_world_predicted, lost_frames_ > 0);
+  result.times.matching_ms = stage.Restart();
+
+  // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
+  const bool have_initial_pose =
+      SolvePose(&current, T_camera_world_predicted, static_cast<uint32_t>(result.frame_index));
+  result.times.initial_pose_ms = stage.Restart();
+  if (!have_initial_pose) return Lost(&current, std::move(result), "too few pose inliers");
+
+  // 4. Front-end static point determination: Delaunay graph, inconsistent edge culling,
+  //    components, largest volume static (Sec. IV, V-A); the others lose their mark.
+  RunFrontEndStaticPoints(&current, &result);
+  result.times.static_points_ms = stage.Restart();
+
+  // 5. More map points by projection, then the pose from static points only.
+  const bool tracked = RefinePoseWithStaticPoints(&current, &result);
+  result.times.refine_ms = stage.Restart();
+  if (!tracked) return Lost(&current, std::move(result), "too few static inliers");
+
+  // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
+  UpdateMatchedPoints(current);
+  if (NeedKeyFrame(current.pose.num_inliers)) {
+    result.counts.new_points = MakeKeyFrame(current);
+    result.keyframe = true;
+  }
+  result.times.mapping_ms = stage.Restart();
+
+  lost_frames_ = 0;
+  result.has_pose = true;
+  result.T_world_camera = current.T_camera_world.inverse();
+  result.information = current.pose.information;
+  motion_.Update(frame.stamp_s, result.T_world_camera);
+  Summarise(current, &result);
+  result.times.total_ms = total.ElapsedMs();
+  return result;
+}
+
+bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
+  bool reset = false;
+  if (have_stamp_ && frame.stamp_s < last_stamp_s_) {
+    Reset();
+    reset = true;
+    result->message = "time went backwards: reset";
+  }
+  have_stamp_ = true;
+  last_stamp_s_ = frame.stamp_s;
+  result->frame_index = frame_index_++;
+  result->stamp_s = frame.stamp_s;
+  return reset;
+}
+
+FrameResult Odometry::Initialise(Current* current, FrameResult result) {
+  const int with_depth = current->features.NumWithDepth();
+  if (with_depth < config_.tracking.min_static_inliers * config_.tracking.init_min_points_factor) {
+    return Lost(current, std::move(result), "too few features with depth to initialise");
+  }
+  // The first frame defines the world; after a loss the map restarts at the last good pose.
+  const bool first = !motion_.has_pose();
+  current->T_camera_world = motion_.last_pose().inverse();
+  map_.Clear();
+  TrackingConfig create = config_.tracking;
+  create.max_new_points = with_depth;
+  // Even the first map's points wait for verification: a person in the first frame would
+  // otherwise be trusted static until the front end catches it.
+  CreationContext context{motion_.last_pose(), result.frame_index,
+                          config_.static_points.enabled && config_.tracking.verify_frames > 0};
+  const std::vector<bool> none(current->features.features.size(), false);
+  const std::vector<int> static_neighbourhood(current->features.features.size(), -1);
+  const std::vector<PointId> ids =
+      CreateMapPoints(current->features, none, static_neighbourhood, context, create, &map_);
+  KeyFrame keyframe;
+  keyframe.frame_index = result.frame_index;
+  keyframe.stamp_s = result.stamp_s;
+  keyframe.T_world_camera = motion_.last_pose();
+  keyframe.points = ids;
+  previous_ = FrameMeasurements();
+  keyframe.measurements = MeasurementsOf(*current, ids);
+  map_.AddKeyFrame(std::move(keyframe), config_.tracking.window_keyframes);
+  last_keyframe_frame_ = result.frame_index;
+  last_keyframe_static_ = static_cast<int>(ids.size());
+  last_tracked_ = ids;
+  initialised_ = true;
+  lost_frames_ = 0;
+  motion_.Update(result.stamp_s, motion_.last_pose());
+  motion_.ForgetVelocity();
+  result.state = TrackingState::kInitialised;
+  result.has_pose = first;  // a re-initialisation's pose is assumed, never reported
+  result.T_world_camera = motion_.last_pose();
+  result.keyframe = true;
+  result.counts.new_points = static_cast<int>(ids.size());
+  if (!first) result.message = "re-initialised at the last good pose";
+  Summarise(*current, &result);
+  return result;
+}
+
+FrameResult Odometry::Lost(Current* current, FrameResult result, const char* why) {
+  result.state = TrackingState::kLost;
+  result.has_pose = false;
+  result.message = why;
+  ++lost_frames_;
+  motion_.ForgetVelocity();
+  if (lost_frames_ >= config_.tracking.lost_frames_before_reset) initialised_ = false;
+  Summarise(*current, &result);
+  return result;
+}
+
+}  // namespace dslam

@@ -1,0 +1,240 @@
+// The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
+#include <algorithm>
+#include <unordered_set>
+
+#include "dslam/tracking/map_point_creation.h"
+#include "dslam/tracking/odometry.h"
+
+namespace dslam {
+
+void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
+                                   bool wide) {
+  const TrackingConfig& cfg = config_.tracking;
+  const PinholeCamera& camera = *current->frame->camera;
+  current->local_points = map_.LocalPoints(last_tracked_, StaticSeenSinceFrame());
+  const std::vector<PointId>& local = current->local_points;
+  const double radius = wide ? cfg.wide_search_radius_px : cfg.search_radius_px;
+  current->matches = MatchLocalMap(&map_, local, current->features, camera, T_camera_world, radius,
+                                   cfg.search_min_depth_m, true, &current->feature_taken);
+  if (static_cast<int>(current->matches.size()) >= cfg.min_matches || wide) return;
+  // Too few: the prediction was off (sudden motion). Search the rest with a wide radius.
+  MatchUnmatchedLocalPoints(current, T_camera_world, cfg.wide_search_radius_px);
+}
+
+void Odometry::MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
+                                         double radius_px) {
+  std::unordered_set<PointId> matched;
+  for (const PointMatch& m : current->matches) matched.insert(m.id);
+  std::vector<PointId> rest;
+  for (PointId id : current->local_points) {
+    if (!matched.count(id)) rest.push_back(id);
+  }
+  const std::vector<PointMatch> more =
+      MatchLocalMap(&map_, rest, current->features, *current->frame->camera, T_camera_world,
+                    radius_px, config_.tracking.search_min_depth_m, false, &current->feature_taken);
+  current->matches.insert(current->matches.end(), more.begin(), more.end());
+}
+
+bool Odometry::EnoughInliers(const PoseResult& pose) const {
+  return pose.success && pose.num_inliers >= config_.tracking.min_static_inliers;
+}
+
+PoseResult Odometry::SolvePoseFromStaticPoints(const Current& current,
+                                               const Eigen::Isometry3d& T_camera_world) const {
+  const PinholeCamera& camera = *current.frame->camera;
+  PoseResult verified =
+      EstimatePoseFromMatches(map_, current.matches, current.features, camera, T_camera_world,
+                              PointSelection::kVerified, current.excluded, config_);
+  if (EnoughInliers(verified)) return verified;
+  // Too few verified points (new scene parts): candidates help until they are verified.
+  return EstimatePoseFromMatches(map_, current.matches, current.features, camera, T_camera_world,
+                                 PointSelection::kMarked, current.excluded, config_);
+}
+
+bool Odometry::SolvePose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
+                         uint32_t ransac_seed) {
+  current->pose = SolvePoseFromStaticPoints(*current, T_camera_world_guess);
+  if (!EnoughInliers(current->pose)) {
+    // Marked points are too few (people fill the view, or the prediction failed): a robust pose
+    // over all matches beats coasting on the motion model (Bonn crowd frames 21-26, BENCHMARKS.md).
+    current->pose = EstimateRobustPoseFromMatches(map_, current->matches, current->features,
+                                                  *current->frame->camera, config_, ransac_seed);
+    if (!EnoughInliers(current->pose)) return false;
+    current->from_robust_pose = true;
+  }
+  current->T_camera_world = current->pose.T_camera_world;
+  return true;
+}
+
+std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const {
+  const TrackingConfig& cfg = config_.tracking;
+  std::vector<const FrameMeasurements*> frames;
+  if (cfg.front_end_reference != "previous") {
+    // Keyframes at least front_end_min_age_frames old (a short baseline hides walking people),
+    // spread evenly from the oldest (longest baseline) to the newest eligible one.
+    const auto& keyframes = map_.keyframes();
+    const int now = frame_index_ - 1;
+    int n = static_cast<int>(keyframes.size());
+    while (n > 1 && now - keyframes[n - 1].frame_index < cfg.front_end_min_age_frames) --n;
+    const int k = std::min(n, cfg.front_end_keyframes);
+    for (int i = 0; i < k; ++i) {
+      const int index = k == 1 ? 0 : i * (n - 1) / (k - 1);
+      frames.push_back(&keyframes[index].measurements);
+    }
+  }
+  if (cfg.front_end_reference != "keyframes" && !previous_.by_point.empty()) {
+    frames.push_back(&previous_);
+  }
+  return frames;
+}
+
+void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
+  if (!config_.static_points.enabled) return;  // the static-world baseline
+  current->static_points = DetermineStaticPointsFrontEnd(
+      map_, current->matches, current->features, current->T_camera_world, FrontEndReferenceFrames(),
+      config_.static_points);
+  const TrackingConfig& cfg = config_.tracking;
+  const LabelRules rules{cfg.isolated_frames_to_unmark, cfg.verify_frames, cfg.remark_frames};
+  current->excluded = ApplyStaticLabels(current->static_points, current->matches, rules,
+                                        result->frame_index, &map_);
+  const StaticPointsStats& stats = current->static_points.result.stats;
+  result->counts.graph_points = stats.points;
+  result->counts.graph_edges = stats.edges;
+  result->counts.culled_edges = stats.culled_edges;
+}
+
+bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result) {
+  MatchUnmatchedLocalPoints(current, current->T_camera_world, config_.tracking.search_radius_px);
+  current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged
+  if (!SolvePose(current, current->T_camera_world,
+                 static_cast<uint32_t>(result->frame_index) + 1u)) {
+    return false;
+  }
+  result->state = current->from_robust_pose ? TrackingState::kRecovered : TrackingState::kTracking;
+  return true;
+}
+
+void Odometry::UpdateMatchedPoints(const Current& current) {
+  const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
+  previous_ = FrameMeasurements();
+  previous_.T_camera_world = current.T_camera_world;
+  last_tracked_.clear();
+  for (const PointMatch& match : current.matches) {
+    MapPoint* point = map_.Find(match.id);
+    if (point == nullptr) continue;
+    ++point->times_found;
+    point->last_seen_frame = frame_index_ - 1;
+    last_tracked_.push_back(match.id);
+    const auto& measurement = current.features.features[match.feature].measurement;
+    if (!measurement) continue;
+    previous_.by_point.emplace(match.id, *measurement);
+    if (!point->marked) {
+      // Unmarked points follow their object (Sec. V-C, update): matching keeps claiming its
+      // features, so they do not come back as new marked points.
+      const PointMeasurement in_world = Transformed(*measurement, T_world_camera);
+      point->p_world = in_world.y_camera;
+      point->cov_world = in_world.covariance;
+    }
+  }
+}
+
+int Odometry::StaticSeenSinceFrame() const {
+  const int keep = config_.tracking.keep_static_frames;
+  return keep > 0 ? std::max(0, frame_index_ - 1 - keep) : -1;
+}
+
+bool Odometry::NeedKeyFrame(int static_matches) const {
+  const TrackingConfig& cfg = config_.tracking;
+  const int since = frame_index_ - 1 - last_keyframe_frame_;
+  if (since >= cfg.keyframe_max_interval) return true;
+  if (since < cfg.keyframe_min_interval) return false;
+  return static_matches < cfg.keyframe_min_static ||
+         static_matches < cfg.keyframe_min_tracked_ratio * last_keyframe_static_;
+}
+
+void Odometry::FuseStaticPoints(const Current& current) {
+  const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
+  for (size_t m = 0; m < current.matches.size(); ++m) {
+    MapPoint* point = map_.Find(current.matches[m].id);
+    const auto& measurement = current.features.features[current.matches[m].feature].measurement;
+    if (point == nullptr || !measurement || !point->IsVerifiedStatic()) continue;
+    if (!current.pose.inliers[m] || (!current.excluded.empty() && current.excluded[m])) continue;
+    // Information-weighted mean of the map position and this keyframe's measurement.
+    const Eigen::Matrix3d info_map = point->cov_world.inverse();
+    const PointMeasurement in_world = Transformed(*measurement, T_world_camera);
+    const Eigen::Matrix3d info_obs = in_world.covariance.inverse();
+    const Eigen::Matrix3d cov = (info_map + info_obs).inverse();
+    point->p_world = cov * (info_map * point->p_world + info_obs * in_world.y_camera);
+    point->cov_world = cov;
+  }
+}
+
+int Odometry::MakeKeyFrame(const Current& current) {
+  const TrackingConfig& cfg = config_.tracking;
+  if (cfg.fuse_static_points) FuseStaticPoints(current);
+  const int frame_index = frame_index_ - 1;
+  const std::vector<int> dynamic = config_.static_points.enabled
+                                       ? DynamicNeighbourhood(current.features, current.matches,
+                                                              map_, cfg.dynamic_neighbour_radius_px)
+                                       : std::vector<int>(current.features.features.size(), -1);
+  CreationContext context{current.T_camera_world.inverse(), frame_index,
+                          config_.static_points.enabled && cfg.verify_frames > 0};
+  const std::vector<PointId> created =
+      CreateMapPoints(current.features, current.feature_taken, dynamic, context, cfg, &map_);
+  KeyFrame keyframe;
+  keyframe.frame_index = frame_index;
+  keyframe.stamp_s = current.frame->stamp_s;
+  keyframe.T_world_camera = context.T_world_camera;
+  keyframe.points = last_tracked_;
+  keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
+  keyframe.measurements = MeasurementsOf(current, created);
+  map_.AddKeyFrame(std::move(keyframe), cfg.window_keyframes);
+  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible,
+            StaticSeenSinceFrame());
+  last_keyframe_frame_ = frame_index;
+  last_keyframe_static_ = current.pose.num_inliers;
+  last_tracked_.insert(last_tracked_.end(), created.begin(), created.end());
+  return static_cast<int>(created.size());
+}
+
+FrameMeasurements Odometry::MeasurementsOf(const Current& current,
+                                           const std::vector<PointId>& created) const {
+  FrameMeasurements out = previous_;  // the matched points' measurements of this frame
+  out.T_camera_world = current.T_camera_world;
+  for (PointId id : created) {
+    const MapPoint* point = map_.Find(id);
+    const auto& measurement = current.features.features[point->created_feature].measurement;
+    out.by_point.emplace(id, *measurement);
+  }
+  return out;
+}
+
+void Odometry::Summarise(const Current& current, FrameResult* result) const {
+  FrameCounts& counts = result->counts;
+  counts.features = static_cast<int>(current.features.features.size());
+  counts.features_with_depth = current.features.NumWithDepth();
+  counts.tracked = static_cast<int>(current.matches.size());
+  counts.pose_inliers = current.pose.num_inliers;
+  counts.map_points = static_cast<int>(map_.size());
+  for (const PointMatch& match : current.matches) {
+    const MapPoint* point = map_.Find(match.id);
+    if (point == nullptr) continue;
+    (point->marked ? counts.static_points : counts.dynamic_points)++;
+    if (point->IsCandidate()) ++counts.candidate_points;
+    ObservedPoint observed;
+    observed.id = match.id;
+    observed.uv_raw = current.features.features[match.feature].uv_raw;
+    observed.p_world = point->p_world;
+    observed.is_static = point->marked;
+    observed.is_candidate = point->IsCandidate();
+    result->points.push_back(observed);
+  }
+  const StaticPointsResult& spd = current.static_points.result;
+  for (size_t e = 0; e < spd.edges.size(); ++e) {
+    const GraphEdge& edge = spd.edges[e];
+    result->edges.push_back(
+        {spd.points_world[edge.i], spd.points_world[edge.j], static_cast<bool>(spd.edge_kept[e])});
+  }
+}
+
+}  // namespace dslam

@@ -1,0 +1,89 @@
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "dslam/tracking/map.h"
+
+namespace dslam {
+namespace {
+
+TEST(Map, AddFindEraseAssignsUniqueIds) {
+  Map map;
+  const PointId a = map.AddPoint(MapPoint());
+  const PointId b = map.AddPoint(MapPoint());
+  EXPECT_NE(a, b);
+  ASSERT_NE(map.Find(a), nullptr);
+  EXPECT_EQ(map.Find(a)->id, a);
+  map.Erase(a);
+  EXPECT_EQ(map.Find(a), nullptr);
+  EXPECT_EQ(map.size(), 1u);
+}
+
+TEST(Map, KeyFrameWindowAndLocalPoints) {
+  Map map;
+  std::vector<PointId> ids;
+  for (int i = 0; i < 6; ++i) ids.push_back(map.AddPoint(MapPoint()));
+  for (int k = 0; k < 3; ++k) {
+    KeyFrame kf;
+    kf.points = {ids[2 * k], ids[2 * k + 1]};
+    map.AddKeyFrame(kf, 2);
+  }
+  ASSERT_EQ(map.keyframes().size(), 2u);
+  EXPECT_EQ(map.keyframes().front().id, 1);
+  auto local = map.LocalPoints({ids[0], ids[2]});
+  std::sort(local.begin(), local.end());
+  EXPECT_EQ(local, (std::vector<PointId>{ids[0], ids[2], ids[3], ids[4], ids[5]}));
+  map.Erase(ids[4]);
+  EXPECT_EQ(map.LocalPoints({}).size(), 3u);
+}
+
+TEST(Map, CullRemovesStaleAndUnreliablePoints) {
+  Map map;
+  MapPoint stale;
+  stale.last_seen_frame = 3;
+  MapPoint recent;
+  recent.last_seen_frame = 20;
+  MapPoint unreliable;
+  unreliable.last_seen_frame = 20;
+  unreliable.times_visible = 10;
+  unreliable.times_found = 1;
+  MapPoint in_window;
+  in_window.last_seen_frame = 1;
+  const PointId s = map.AddPoint(stale), r = map.AddPoint(recent);
+  const PointId u = map.AddPoint(unreliable), w = map.AddPoint(in_window);
+  KeyFrame kf;
+  kf.points = {w};
+  map.AddKeyFrame(kf, 5);
+  EXPECT_EQ(map.Cull(10, 0.25, 5), 2);
+  EXPECT_EQ(map.Find(s), nullptr);
+  EXPECT_EQ(map.Find(u), nullptr);
+  EXPECT_NE(map.Find(r), nullptr);
+  EXPECT_NE(map.Find(w), nullptr);
+}
+
+TEST(Map, VerifiedStaticPointsOutsideTheWindowAreKeptAndSearched) {
+  Map map;
+  MapPoint hidden_static;  // verified static, last seen in frame 8, in no window keyframe
+  hidden_static.last_seen_frame = 8;
+  MapPoint hidden_candidate = hidden_static;
+  hidden_candidate.candidate = true;
+  MapPoint hidden_dynamic = hidden_static;
+  hidden_dynamic.marked = false;
+  MapPoint long_gone = hidden_static;
+  long_gone.last_seen_frame = 2;
+  const PointId s = map.AddPoint(hidden_static), c = map.AddPoint(hidden_candidate);
+  const PointId d = map.AddPoint(hidden_dynamic), g = map.AddPoint(long_gone);
+  EXPECT_TRUE(map.LocalPoints({}).empty());  // no keyframe refers to them
+  const std::vector<PointId> local = map.LocalPoints({}, 5);
+  ASSERT_EQ(local.size(), 1u);
+  EXPECT_EQ(local[0], s);
+  // Window starts at frame 10; verified static points seen since frame 5 survive.
+  EXPECT_EQ(map.Cull(10, 0.25, 5, 5), 3);
+  EXPECT_NE(map.Find(s), nullptr);
+  EXPECT_EQ(map.Find(c), nullptr);
+  EXPECT_EQ(map.Find(d), nullptr);
+  EXPECT_EQ(map.Find(g), nullptr);
+}
+
+}  // namespace
+}  // namespace dslam

@@ -1,0 +1,81 @@
+// Whole-trajectory regression tests: the odometry on short synthetic sequences rendered
+// in-process, with static point determination on and off, against ground truth. Tolerances are
+// set from measured values with margin (see the comment at each bound); they catch regressions,
+// not the benchmark targets (BENCHMARKS.md, scripts/benchmark.py).
+#include <gtest/gtest.h>
+
+#include "dslam/eval/segmentation_score.h"
+#include "dslam/eval/trajectory_metrics.h"
+#include "dslam/synth/sequence.h"
+#include "dslam/tracking/odometry.h"
+
+namespace dslam {
+namespace {
+
+struct RunResult {
+  TrajectoryMetrics metrics;
+  SegmentationScore score;
+  int frames = 0, with_pose = 0;
+};
+
+// Rendered once per scenario and shared by the runs with and without static points.
+struct Rendered {
+  std::vector<RgbdFrame> frames;
+  std::vector<cv::Mat> masks;
+  Trajectory groundtruth;
+};
+
+Rendered Render(const std::string& name, int frames) {
+  const synth::SyntheticSequence sequence(synth::MakeScenario(name, 1));
+  Rendered out;
+  for (int i = 0; i < frames; ++i) {
+    synth::SyntheticFrame frame = sequence.RenderFrame(i);
+    out.groundtruth.push_back({frame.frame.stamp_s, frame.T_world_camera});
+    out.frames.push_back(std::move(frame.frame));
+    out.masks.push_back(std::move(frame.mask));
+  }
+  return out;
+}
+
+RunResult RunOdometry(const Rendered& rendered, bool static_points) {
+  Config config;
+  config.static_points.enabled = static_points;
+  Odometry odometry(config);
+  Trajectory estimated;
+  RunResult out;
+  for (size_t i = 0; i < rendered.frames.size(); ++i) {
+    const FrameResult result = odometry.ProcessFrame(rendered.frames[i]);
+    ++out.frames;
+    if (result.has_pose) {
+      ++out.with_pose;
+      estimated.push_back({result.stamp_s, result.T_world_camera});
+    }
+    out.score.Add(result.points, rendered.masks[i]);
+  }
+  out.metrics = EvaluateTrajectory(estimated, rendered.groundtruth, {}, TrajectoryMetricsOptions());
+  return out;
+}
+
+TEST(OdometryRegression, StaticRoomIsAccurateWithAndWithoutStaticPoints) {
+  const Rendered rendered = Render("static_room", 60);
+  const RunResult on = RunOdometry(rendered, true);
+  const RunResult off = RunOdometry(rendered, false);
+  EXPECT_EQ(on.with_pose, on.frames);
+  EXPECT_LT(on.metrics.ate_m.rmse, 0.01);  // measured ~2-3 mm
+  // Static point determination must not cost accuracy when nothing moves.
+  EXPECT_LT(on.metrics.ate_m.rmse, 1.5 * off.metrics.ate_m.rmse + 0.002);
+  EXPECT_LT(on.score.FalseDynamicRate(), 0.05);  // measured ~1.5% over 300 frames
+}
+
+TEST(OdometryRegression, WalkingPeopleAreSeparatedAndDoNotCaptureThePose) {
+  const Rendered rendered = Render("walking", 90);
+  const RunResult on = RunOdometry(rendered, true);
+  const RunResult off = RunOdometry(rendered, false);
+  EXPECT_EQ(on.with_pose, on.frames);
+  EXPECT_LT(on.metrics.ate_m.rmse, off.metrics.ate_m.rmse);
+  EXPECT_GT(on.score.true_dynamic(), 0);
+  EXPECT_GT(on.score.Precision(), 0.5);
+}
+
+}  // namespace
+}  // namespace dslam
