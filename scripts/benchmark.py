@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Front-end benchmark: accuracy, segmentation and speed with static point determination on and
-off (the static-world baseline) in the same run. Prints Markdown tables for BENCHMARKS.md.
+"""Benchmark: accuracy, segmentation and speed of dslam (default parameters) beside two variants
+from the same run: the back end on (local bundle adjustment after keyframes; off by default) and
+static point determination off (the static-world baseline).
+Prints a Markdown table for BENCHMARKS.md.
 
 Synthetic scenarios are rendered once per seed into --cache (seeds 1, 2, 3 averaged); real data
 from ../shared/data is used when present. Usage:
@@ -20,7 +22,7 @@ WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
 BIN = os.path.join(WS, "devel", "lib", "dslam")
 SHARED = os.path.join(os.path.dirname(REPO), "shared", "data")
 SCENARIOS = ["walking", "walking_static", "close_person", "walking_halfsphere", "slow_box",
-             "nonrigid_sheet", "static_room"]
+             "nonrigid_sheet", "static_room", "fast_rotation"]
 
 
 def run(cmd):
@@ -38,19 +40,26 @@ def render(scenario, seed, frames, cache):
     return folder
 
 
-def evaluate(folder, camera, static_points, out_dir, config):
-    tag = "on" if static_points else "off"
-    traj = os.path.join(out_dir, f"trajectory_{tag}.txt")
-    summary = os.path.join(out_dir, f"summary_{tag}.json")
+# The variants of every row, run in the same invocation: dslam, and the two baselines.
+VARIANTS = {
+    "dslam": [],                                   # the defaults (back end off, see README)
+    "backend_on": ["--backend", "on"],             # local mapping after keyframes
+    "static_off": ["--static-points", "off"],      # static-world baseline
+}
+
+
+def evaluate(folder, camera, variant, out_dir, config):
+    traj = os.path.join(out_dir, f"trajectory_{variant}.txt")
+    summary = os.path.join(out_dir, f"summary_{variant}.json")
     cmd = [os.path.join(BIN, "dslam_run_dataset"), "--dataset", folder, "--trajectory", traj,
-           "--status", os.path.join(out_dir, f"status_{tag}.csv"), "--summary", summary,
-           "--static-points", tag, "--quiet"]
+           "--status", os.path.join(out_dir, f"status_{variant}.csv"), "--summary", summary,
+           "--quiet"] + VARIANTS[variant]
     if camera:
         cmd += ["--camera", camera]
     if config:
         cmd += ["--config", config]
     run(cmd)
-    metrics = os.path.join(out_dir, f"eval_{tag}.json")
+    metrics = os.path.join(out_dir, f"eval_{variant}.json")
     ev = [os.path.join(BIN, "dslam_eval"), "--groundtruth", os.path.join(folder, "groundtruth.txt"),
           "--trajectory", traj, "--frames", os.path.join(folder, "rgb.txt"), "--json", metrics]
     ev += ["--camera", camera or os.path.join(folder, "camera.yaml")]
@@ -66,16 +75,28 @@ def fmt(value, digits=4):
     return "n/a" if value is None else f"{value:.{digits}f}"
 
 
-def row(name, on, off):
-    ratio = off["ate_rmse_m"] / max(on["ate_rmse_m"], 1e-9)
+HEADER = ("| sequence | ATE [m] | ATE back end on [m] | ATE static points off [m] | "
+          "RPE [m/s] | RPE [deg/s] | RPE [deg/s] back end on | tracked | tracked back end on | "
+          "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | "
+          "frame [ms] | frame back end on [ms] | BA [ms] median / p95 | BA keyframes / points |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+
+
+def row(name, results):
+    on, backend, no_static = (results[v] for v in ("dslam", "backend_on", "static_off"))
     seg = (f"{on['dynamic_precision']:.3f} | {on['dynamic_recall']:.3f} | "
            f"{on['false_dynamic_rate']:.4f}") if "dynamic_recall" in on else "- | - | -"
     seg += f" | {on['labelled_dynamic_share']:.4f}"
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
-    return (f"| {name} | {on['ate_rmse_m']:.4f} | {off['ate_rmse_m']:.4f} | {ratio:.1f}x | "
-            f"{fmt(on.get('rpe_trans_rmse_m_per_s'))} | {tracked:.3f} | {fmt(on['coverage'], 3)} | {seg} | "
-            f"{on['median_total_ms']:.1f} | {on['median_static_points_ms']:.2f} "
-            f"({on['median_graph_points']:.0f} pts) |")
+    tracked_backend = backend["frames_with_pose"] / max(backend["frames"], 1)
+    return (f"| {name} | {on['ate_rmse_m']:.4f} | {backend['ate_rmse_m']:.4f} | "
+            f"{no_static['ate_rmse_m']:.4f} | {fmt(on.get('rpe_trans_rmse_m_per_s'))} | "
+            f"{fmt(on.get('rpe_rot_rmse_deg_per_s'), 2)} | "
+            f"{fmt(backend.get('rpe_rot_rmse_deg_per_s'), 2)} | {tracked:.3f} | "
+            f"{tracked_backend:.3f} | {seg} | {on['median_frame_ms']:.1f} | "
+            f"{backend['median_frame_ms']:.1f} | "
+            f"{backend['median_ba_ms']:.1f} / {backend['p95_ba_ms']:.1f} | "
+            f"{backend['median_ba_keyframes']:.0f} / {backend['median_ba_points']:.0f} |")
 
 
 def mean_of(results):
@@ -94,23 +115,21 @@ def main():
     parser.add_argument("--cache", default=os.path.join(REPO, "build", "bench"))
     parser.add_argument("--config", default="")
     args = parser.parse_args()
-    header = ("| sequence | ATE on [m] | ATE off [m] | off/on | RPE on [m/s] | tracked | coverage | "
-              "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | total [ms] | "
-              "SPD [ms] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    header = HEADER
     print(header)
     started = time.time()
     seeds = [int(s) for s in args.seeds.split(",") if s]
     if not args.no_synthetic:
         for scenario in [s for s in args.scenarios.split(",") if s]:
-            per_seed = {True: [], False: []}
+            per_seed = {variant: [] for variant in VARIANTS}
             for seed in seeds:
                 folder = render(scenario, seed, args.frames, args.cache)
                 out_dir = os.path.join(args.cache, "runs", os.path.basename(folder))
                 os.makedirs(out_dir, exist_ok=True)
-                for on in (True, False):
-                    per_seed[on].append(evaluate(folder, "", on, out_dir, args.config))
-            print(row(f"synthetic {scenario} (seeds {args.seeds})", mean_of(per_seed[True]),
-                      mean_of(per_seed[False])), flush=True)
+                for variant in VARIANTS:
+                    per_seed[variant].append(evaluate(folder, "", variant, out_dir, args.config))
+            means = {variant: mean_of(runs) for variant, runs in per_seed.items()}
+            print(row(f"synthetic {scenario} (seeds {args.seeds})", means), flush=True)
     if args.real:
         for name, folder in [("Bonn crowd 300-599", "bonn_crowd_frames300-599"),
                              ("TUM fr1/desk 9 frames", "tum_fr1_desk_9frames")]:
@@ -119,9 +138,9 @@ def main():
                 continue
             out_dir = os.path.join(args.cache, "runs", folder)
             os.makedirs(out_dir, exist_ok=True)
-            results = {on: evaluate(path, os.path.join(path, "camera.yaml"), on, out_dir,
-                                    args.config) for on in (True, False)}
-            print(row(name, results[True], results[False]), flush=True)
+            results = {variant: evaluate(path, os.path.join(path, "camera.yaml"), variant, out_dir,
+                                         args.config) for variant in VARIANTS}
+            print(row(name, results), flush=True)
     print(f"\n(benchmark wall time {time.time() - started:.0f} s, {os.cpu_count()} cores)")
 
 

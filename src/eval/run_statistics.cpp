@@ -1,6 +1,7 @@
 #include "dslam/eval/run_statistics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -10,21 +11,25 @@ std::string StatusCsvHeader() {
   return "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
          "candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
-         "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms";
+         "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms,"
+         "window_keyframes,ba_points,ba_outliers,ba_iterations,ba_ms";
 }
 
 std::string StatusCsvRow(const FrameResult& r) {
   const FrameCounts& c = r.counts;
   const StageTimes& t = r.times;
   char buffer[512];
-  std::snprintf(
-      buffer, sizeof(buffer),
-      "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f",
-      r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
-      c.features_with_depth, c.tracked, c.static_points, c.dynamic_points, c.candidate_points,
-      c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges, c.map_points, c.new_points,
-      t.features_ms, t.matching_ms, t.initial_pose_ms, t.static_points_ms, t.refine_ms,
-      t.mapping_ms, t.total_ms);
+  std::snprintf(buffer, sizeof(buffer),
+                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%."
+                "3f,%d,%d,%d,"
+                "%d,%.3f",
+                r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
+                c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
+                c.candidate_points, c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges,
+                c.map_points, c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
+                t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms,
+                r.backend.window_keyframes, r.backend.ba_points, r.backend.ba_outliers,
+                r.backend.ba_iterations, r.backend.ba_ms);
   return buffer;
 }
 
@@ -33,6 +38,14 @@ double Median(std::vector<double> values) {
   const size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + mid, values.end());
   return values[mid];
+}
+
+double Quantile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0.0;
+  const size_t n = values.size();
+  const auto rank = std::clamp<size_t>(static_cast<size_t>(std::ceil(fraction * n)), 1, n);
+  std::nth_element(values.begin(), values.begin() + (rank - 1), values.end());
+  return values[rank - 1];
 }
 
 void RunSummary::Add(const FrameResult& result) {
@@ -44,7 +57,30 @@ void RunSummary::Add(const FrameResult& result) {
   if (result.state == TrackingState::kTracking || result.state == TrackingState::kRecovered) {
     times_.push_back(result.times);
     graph_points_.push_back(result.counts.graph_points);
+    frame_ms_.push_back(result.times.total_ms + result.backend.ba_ms);
   }
+  if (result.backend.ran) backend_.push_back(result.backend);
+}
+
+double RunSummary::BackEndQuantile(const std::string& field, double fraction) const {
+  std::vector<double> values;
+  for (const BackEndStatus& b : backend_) {
+    if (field == "ba_ms")
+      values.push_back(b.ba_ms);
+    else if (field == "ba_points")
+      values.push_back(b.ba_points);
+    else if (field == "ba_keyframes")
+      values.push_back(b.ba_keyframes);
+    else if (field == "ba_measurements")
+      values.push_back(b.ba_measurements);
+    else if (field == "ba_outliers")
+      values.push_back(b.ba_outliers);
+    else if (field == "ba_iterations")
+      values.push_back(b.ba_iterations);
+    else
+      throw std::invalid_argument("unknown back-end field " + field);
+  }
+  return Quantile(values, fraction);
 }
 
 double RunSummary::MedianMs(const std::string& stage) const {

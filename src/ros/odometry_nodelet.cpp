@@ -30,7 +30,7 @@ void OdometryNodelet::onInit() {
   try {
     LoadRosParams(pnh, &config, &config_);
     if (!config_.camera_yaml.empty()) yaml_camera_ = LoadCameraYaml(config_.camera_yaml).camera;
-    odometry_ = std::make_unique<Odometry>(config);
+    slam_ = std::make_unique<Slam>(config);
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
     return;
@@ -112,10 +112,10 @@ void OdometryNodelet::Process(const Input& input) {
     return;
   }
   if (reset_requested_.exchange(false)) {
-    odometry_->Reset();
+    slam_->Reset();
     publisher_->ClearPath();
   }
-  const FrameResult result = odometry_->ProcessFrame(frame);
+  const FrameResult result = slam_->ProcessFrame(frame);
   ++processed_;
   if (result.reset) {
     NODELET_WARN("dslam: odometry reset: %s", result.message.c_str());

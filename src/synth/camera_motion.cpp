@@ -107,6 +107,12 @@ Eigen::Isometry3d CameraPoseAt(const CameraMotionParams& p, double t, uint32_t s
       Eigen::Vector3d a;
       for (int i = 0; i < 3; ++i)
         a[i] = Wave(p.rpy_amplitude_deg[i] * kDegToRad, p.rpy_period_s[i], t);
+      if (p.rpy_translation_m != Eigen::Vector3d::Zero()) {  // hand shake (default: none)
+        Eigen::Vector3d offset;
+        for (int i = 0; i < 3; ++i)
+          offset[i] = Wave(p.rpy_translation_m[i], p.rpy_translation_period_s[i], t);
+        base.translation() += base.linear() * offset;
+      }
       base.linear() = base.linear() * (Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitZ()) *
                                        Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitX()) *
                                        Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitY()))

@@ -53,6 +53,9 @@ WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string&
   WriteCameraYaml(folder + "/camera.yaml", sc.sensor);
   std::ofstream info = OpenText(folder + "/synth_info.txt", "# dslam_synth sequence\n");
   info << "scenario: " << sc.name << "\nseed: " << sc.seed << "\nframes: " << frames << "\n";
+  if (sc.camera.exposure.exposure_s > 0.0) {  // motion blur (motion_blur.h); absent when sharp
+    info << "exposure_s: " << sc.camera.exposure.exposure_s << "\n";
+  }
   const std::string note = "# dslam_synth " + sc.name + " seed " + std::to_string(sc.seed) + "\n";
   std::ofstream rgb =
       OpenText(folder + "/rgb.txt", "# color images\n" + note + "# timestamp filename\n");

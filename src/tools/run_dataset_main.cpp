@@ -1,6 +1,7 @@
-// dslam_run_dataset: runs the odometry on a TUM-layout folder and writes the trajectory (every
-// tracked frame, TUM format, camera optical frame), a per-frame status CSV and a summary. On
-// synthetic folders (mask.txt present) it also scores the static/dynamic labels.
+// dslam_run_dataset: runs dslam (front end and, after keyframes, the back end; synchronous and
+// deterministic) on a TUM-layout folder and writes the trajectory (every tracked frame's pose as
+// estimated at that frame, TUM format, camera optical frame), a per-frame status CSV and a summary.
+// On synthetic folders (mask.txt present) it also scores the static/dynamic labels.
 #include <unistd.h>
 
 #include <cstdio>
@@ -12,19 +13,21 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "dslam/backend/slam.h"
 #include "dslam/eval/json_writer.h"
 #include "dslam/eval/run_statistics.h"
 #include "dslam/eval/segmentation_score.h"
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
-#include "dslam/tracking/odometry.h"
 
 namespace {
 
 struct Args {
   std::string dataset, camera, trajectory, status, config, summary, segmentation;
-  std::string static_points;  ///< "on", "off" or empty (the config's static_points.enabled)
+  std::string refined_trajectory;  ///< every frame on its reference keyframe after the last BA
+  std::string static_points;       ///< "on", "off" or empty (the config's static_points.enabled)
+  std::string backend;             ///< "on", "off" or empty (the config's backend.enabled)
   int max_frames = -1;
   bool quiet = false;
 };
@@ -33,9 +36,10 @@ int Usage() {
   std::cerr << "usage: dslam_run_dataset --dataset FOLDER --trajectory OUT.txt [--camera "
                "camera.yaml]\n"
                "                         [--status OUT.csv] [--static-points on|off] "
-               "[--config params.yaml]\n"
+               "[--backend on|off] [--config params.yaml]\n"
                "                         [--summary OUT.json] [--segmentation OUT.csv] "
-               "[--max-frames N] [--quiet]\n";
+               "[--max-frames N] [--quiet]\n"
+               "                         [--refined-trajectory OUT.txt]\n";
   return 2;
 }
 
@@ -54,6 +58,8 @@ bool Parse(int argc, char** argv, Args* args) {
       args->camera = value;
     else if (key == "--trajectory")
       args->trajectory = value;
+    else if (key == "--refined-trajectory")
+      args->refined_trajectory = value;
     else if (key == "--status")
       args->status = value;
     else if (key == "--config")
@@ -66,6 +72,8 @@ bool Parse(int argc, char** argv, Args* args) {
       args->max_frames = std::stoi(value);
     else if (key == "--static-points" && (value == "on" || value == "off"))
       args->static_points = value;
+    else if (key == "--backend" && (value == "on" || value == "off"))
+      args->backend = value;
     else
       return false;
   }
@@ -115,11 +123,18 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
       .AddInteger("frames_with_pose", summary.frames_with_pose())
       .AddInteger("lost_frames", summary.lost_frames())
       .AddBool("static_points", config.static_points.enabled)
+      .AddBool("backend", config.backend.enabled)
       .AddNumber("median_graph_points", summary.MedianGraphPoints(), kDigits)
       .AddNumber("labelled_dynamic_share", summary.LabelledDynamicShare(), kDigits);
   for (const char* stage :
        {"features", "matching", "initial_pose", "static_points", "refine", "mapping", "total"}) {
     json.AddNumber(std::string("median_") + stage + "_ms", summary.MedianMs(stage), kDigits);
+  }
+  json.AddNumber("median_frame_ms", summary.MedianFrameMs(), kDigits)
+      .AddInteger("backend_runs", summary.backend_runs());
+  for (const char* field : {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations"}) {
+    json.AddNumber(std::string("median_") + field, summary.BackEndQuantile(field, 0.5), kDigits)
+        .AddNumber(std::string("p95_") + field, summary.BackEndQuantile(field, 0.95), kDigits);
   }
   if (!scored) return json;
   json.AddNumber("dynamic_precision", score.Precision(), kDigits)
@@ -138,9 +153,10 @@ int Run(const Args& args) {
   dslam::Config config;
   if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
   if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
+  if (!args.backend.empty()) config.backend.enabled = args.backend == "on";
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
   const auto masks = ReadMasks(args.dataset);
-  dslam::Odometry odometry(config);
+  dslam::Slam slam(config);
   dslam::Trajectory trajectory;
   dslam::RunSummary summary;
   dslam::SegmentationScore score;
@@ -157,7 +173,7 @@ int Run(const Args& args) {
   const size_t n =
       args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
   for (size_t i = 0; i < n; ++i) {
-    const dslam::FrameResult r = odometry.ProcessFrame(dataset.LoadFrame(i));
+    const dslam::FrameResult r = slam.ProcessFrame(dataset.LoadFrame(i));
     summary.Add(r);
     if (r.has_pose) trajectory.push_back({r.stamp_s, r.T_world_camera});
     if (status) status << dslam::StatusCsvRow(r) << "\n";
@@ -172,6 +188,9 @@ int Run(const Args& args) {
   }
   if (!args.quiet && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
   dslam::WriteTumTrajectory(args.trajectory, trajectory);
+  if (!args.refined_trajectory.empty()) {
+    dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
+  }
   summary.PrintStages(std::cout);
   if (!masks.empty()) {
     std::printf(
@@ -185,12 +204,12 @@ int Run(const Args& args) {
     dslam::WriteJsonFile(args.summary, SummaryJson(summary, score, !masks.empty(), config));
   }
   std::printf(
-      "summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, median %.1f "
-      "ms/frame -> %s\n",
+      "summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, back end %s, "
+      "median %.1f ms/frame (front end %.1f) -> %s\n",
       summary.frames(), summary.frames_with_pose(),
       100.0 * summary.frames_with_pose() / std::max(1, summary.frames()), summary.lost_frames(),
-      config.static_points.enabled ? "on" : "off", summary.MedianMs("total"),
-      args.trajectory.c_str());
+      config.static_points.enabled ? "on" : "off", config.backend.enabled ? "on" : "off",
+      summary.MedianFrameMs(), summary.MedianMs("total"), args.trajectory.c_str());
   return 0;
 }
 

@@ -51,14 +51,23 @@ PoseResult Odometry::SolvePoseFromStaticPoints(const Current& current,
                                  PointSelection::kMarked, current.excluded, config_);
 }
 
+PoseResult Odometry::RobustPose(const Current& current, PointSelection voters,
+                                uint32_t ransac_seed) const {
+  return EstimateRobustPoseFromMatches(map_, current.matches, current.features,
+                                       *current.frame->camera, voters, config_, ransac_seed);
+}
+
 bool Odometry::SolvePose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
                          uint32_t ransac_seed) {
   current->pose = SolvePoseFromStaticPoints(*current, T_camera_world_guess);
   if (!EnoughInliers(current->pose)) {
-    // Marked points are too few (people fill the view, or the prediction failed): a robust pose
-    // over all matches beats coasting on the motion model (Bonn crowd frames 21-26, BENCHMARKS.md).
-    current->pose = EstimateRobustPoseFromMatches(map_, current->matches, current->features,
-                                                  *current->frame->camera, config_, ransac_seed);
+    // Too few inliers from the static points at the predicted pose (fast motion, or people fill
+    // the view): a RANSAC pose needs no prediction (tracking.robust_pose_points says who votes).
+    const std::string& voters = config_.tracking.robust_pose_points;
+    if (voters != "all") current->pose = RobustPose(*current, PointSelection::kMarked, ransac_seed);
+    if (voters == "all" || (voters == "marked_first" && !EnoughInliers(current->pose))) {
+      current->pose = RobustPose(*current, PointSelection::kAll, ransac_seed);
+    }
     if (!EnoughInliers(current->pose)) return false;
     current->from_robust_pose = true;
   }
@@ -188,6 +197,7 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.points = last_tracked_;
   keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
   keyframe.measurements = MeasurementsOf(current, created);
+  keyframe.information = current.pose.information;
   map_.AddKeyFrame(std::move(keyframe), cfg.window_keyframes);
   map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible,
             StaticSeenSinceFrame());
@@ -235,6 +245,14 @@ void Odometry::Summarise(const Current& current, FrameResult* result) const {
     result->edges.push_back(
         {spd.points_world[edge.i], spd.points_world[edge.j], static_cast<bool>(spd.edge_kept[e])});
   }
+}
+
+void Odometry::AdoptNewestKeyFramePose() {
+  if (map_.keyframes().empty() || lost_frames_ > 0) return;
+  const KeyFrame& newest = map_.keyframes().back();
+  if (newest.frame_index != frame_index_ - 1) return;  // not made from the last frame
+  motion_.CorrectLastPose(newest.T_world_camera);
+  previous_.T_camera_world = newest.measurements.T_camera_world;
 }
 
 }  // namespace dslam

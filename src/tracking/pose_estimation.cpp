@@ -64,11 +64,11 @@ PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>
 
 PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
                                          const FrameFeatures& features, const PinholeCamera& camera,
-                                         const Config& config, uint32_t seed) {
+                                         PointSelection selection, const Config& config,
+                                         uint32_t seed) {
   // The map covariance is rotated with an unknown pose here: leave it to RANSAC's extra sigma.
-  const Observations obs =
-      BuildObservations(map, matches, features, Eigen::Matrix3d::Zero(), PointSelection::kAll, {},
-                        config.depth_noise.pixel_sigma_px);
+  const Observations obs = BuildObservations(map, matches, features, Eigen::Matrix3d::Zero(),
+                                             selection, {}, config.depth_noise.pixel_sigma_px);
   return ToMatches(EstimatePoseRobust(obs.observations, camera, config.pose, seed), obs,
                    matches.size());
 }

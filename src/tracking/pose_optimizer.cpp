@@ -14,12 +14,6 @@ namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Upper-triangular S with S^T S = C^-1, so ||S e||^2 = e^T C^-1 e (S = L^T, L L^T = C^-1).
-Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& covariance) {
-  const Eigen::Matrix3d information = covariance.inverse();
-  return Eigen::LLT<Eigen::Matrix3d>(information).matrixU();
-}
-
 // d pi(p) / d p of the pinhole projection [px/m] at camera-frame point p.
 Eigen::Matrix<double, 2, 3> ProjectionJacobian(const Eigen::Vector3d& p, double fx, double fy) {
   Eigen::Matrix<double, 2, 3> J;

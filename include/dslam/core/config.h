@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "dslam/core/backend_config.h"
 #include "dslam/core/config_field.h"
 #include "dslam/core/features_config.h"
 #include "dslam/core/static_points_config.h"
@@ -34,6 +35,7 @@ struct Config {
   PoseConfig pose;                   ///< motion-only BA and RANSAC (features_config.h)
   StaticPointsConfig static_points;  ///< static point determination (static_points_config.h)
   TrackingConfig tracking;           ///< local map, keyframes, recovery (tracking_config.h)
+  BackendConfig backend;             ///< local mapping after keyframes (backend_config.h)
 
   /// Calls `f(name, section)` for every section, in documentation order.
   template <typename Self, typename F>
@@ -44,6 +46,7 @@ struct Config {
     f("pose", s.pose);
     f("static_points", s.static_points);
     f("tracking", s.tracking);
+    f("backend", s.backend);
   }
 
   /// Throws ConfigError naming the first out-of-range or inconsistent parameter.

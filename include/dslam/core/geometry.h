@@ -1,8 +1,10 @@
 #pragma once
-// Small rotation helpers shared by the parts: the skew-symmetric (cross-product) matrix and the
-// rotation of a covariance into another frame.
+// Small helpers shared by the parts: the skew-symmetric (cross-product) matrix, the rotation of a
+// covariance into another frame and the whitening of a 3D residual.
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 namespace dslam {
 
@@ -17,6 +19,13 @@ inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
 /// unchanged). Evaluated as (R C) R^T.
 inline Eigen::Matrix3d RotatedCovariance(const Eigen::Matrix3d& R, const Eigen::Matrix3d& C) {
   return R * C * R.transpose();
+}
+
+/// Upper-triangular S with S^T S = C^-1 for a covariance C (S = L^T, L L^T = C^-1), so that
+/// ||S e||^2 = e^T C^-1 e: the whitening of a residual e with covariance C.
+inline Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& covariance) {
+  const Eigen::Matrix3d information = covariance.inverse();
+  return Eigen::LLT<Eigen::Matrix3d>(information).matrixU();
 }
 
 }  // namespace dslam

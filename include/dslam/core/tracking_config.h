@@ -35,6 +35,7 @@ struct TrackingConfig {
   int isolated_frames_to_unmark = 3;
   int remark_frames = 15;
   int lost_frames_before_reset = 10;
+  std::string robust_pose_points = "marked_first";
 
   /// Visits every field in documentation order.
   template <typename Self, typename Visitor>
@@ -135,6 +136,12 @@ struct TrackingConfig {
     v(Field("lost_frames_before_reset", "frames", 1, 100000,
             "consecutive lost frames before re-initialising at the last good pose"),
       s.lost_frames_before_reset);
+    // The RANSAC fallback when static points give too few inliers: "marked" lets only points not
+    // known to move decide the pose (a crowd filling the view cannot win the vote); "all" samples
+    // every match; "marked_first" tries the marked points, then all (measured in BENCHMARKS.md).
+    v(Choice("robust_pose_points", {"all", "marked", "marked_first"},
+             "matches the RANSAC pose fallback samples: all, marked only, or marked then all"),
+      s.robust_pose_points);
   }
 };
 

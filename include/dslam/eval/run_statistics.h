@@ -18,6 +18,9 @@ std::string StatusCsvRow(const FrameResult& result);
 /// Median of `values` (0 when empty).
 double Median(std::vector<double> values);
 
+/// The `fraction`-quantile of `values` (fraction in [0, 1], nearest rank; 0 when empty).
+double Quantile(std::vector<double> values, double fraction);
+
 /// Collects per-frame results for a summary.
 class RunSummary {
  public:
@@ -38,6 +41,17 @@ class RunSummary {
   /// Median number of points in the front-end graph over tracked frames.
   double MedianGraphPoints() const;
 
+  /// Median [ms] of the whole frame over tracked frames: the front end plus, after keyframes,
+  /// the back end (what a synchronous run spends per frame).
+  double MedianFrameMs() const { return Median(frame_ms_); }
+
+  /// Keyframes after which the back end's local bundle adjustment ran.
+  int backend_runs() const { return static_cast<int>(backend_.size()); }
+
+  /// The `fraction`-quantile over the back-end runs of "ba_ms", "ba_points", "ba_keyframes",
+  /// "ba_measurements", "ba_outliers" or "ba_iterations".
+  double BackEndQuantile(const std::string& field, double fraction) const;
+
   /// [-] Share of matched-point observations labelled dynamic (unmarked), over all frames: on a
   /// static scene, the share wrongly marked dynamic.
   double LabelledDynamicShare() const;
@@ -45,6 +59,8 @@ class RunSummary {
  private:
   int frames_ = 0, with_pose_ = 0, lost_ = 0;
   std::vector<StageTimes> times_;
+  std::vector<double> frame_ms_;
+  std::vector<BackEndStatus> backend_;
   std::vector<double> graph_points_;
   long labelled_static_ = 0, labelled_dynamic_ = 0;
 };

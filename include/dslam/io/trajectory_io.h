@@ -3,20 +3,10 @@
 // colour camera's optical frame in the world (T_world_camera), stamps in seconds, '#' comments.
 
 #include <string>
-#include <vector>
 
-#include <Eigen/Geometry>
+#include "dslam/core/trajectory.h"
 
 namespace dslam {
-
-/// One timestamped pose T_world_camera.
-struct StampedPose {
-  double stamp_s = 0.0;                                              ///< [s]
-  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< camera -> world [m]
-};
-
-/// A time-ordered sequence of poses.
-using Trajectory = std::vector<StampedPose>;
 
 /// Reads a TUM trajectory file; quaternions are normalised, lines are sorted by stamp.
 /// Throws std::runtime_error naming the file and line on malformed input.

@@ -1,9 +1,9 @@
 #pragma once
 // dslam/OdometryNodelet: synchronizes colour, depth and camera_info (relative, remappable names
-// rgb/image, depth/image, rgb/camera_info), runs dslam::Odometry on a worker thread fed by a
-// two-frame bounded queue (it absorbs the bursts of the ApproximateTime synchronizer), and
-// publishes through FramePublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory`
-// (dslam/SaveTrajectory).
+// rgb/image, depth/image, rgb/camera_info), runs dslam::Slam (front end and back end) on a worker
+// thread fed by a two-frame bounded queue (it absorbs the bursts of the ApproximateTime
+// synchronizer), and publishes through FramePublisher. Services: `reset` (std_srvs/Trigger),
+// `save_trajectory` (dslam/SaveTrajectory).
 
 #include <atomic>
 #include <memory>
@@ -24,12 +24,12 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "dslam/SaveTrajectory.h"
+#include "dslam/backend/slam.h"
 #include "dslam/core/camera.h"
 #include "dslam/io/trajectory_io.h"
 #include "dslam/ros/frame_publisher.h"
 #include "dslam/ros/latest_slot.h"
 #include "dslam/ros/node_config.h"
-#include "dslam/tracking/odometry.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -70,7 +70,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   bool OnSaveTrajectory(dslam::SaveTrajectory::Request& req, dslam::SaveTrajectory::Response& res);
 
   NodeConfig config_;
-  std::unique_ptr<Odometry> odometry_;         // used by the worker thread only
+  std::unique_ptr<Slam> slam_;  // front end and back end; used by the worker thread only
   std::unique_ptr<FramePublisher> publisher_;  // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;

@@ -19,6 +19,15 @@ CameraMotionKind ParseCameraMotion(const std::string& name);
 /// The name ParseCameraMotion() accepts for `kind`.
 std::string CameraMotionName(CameraMotionKind kind);
 
+/// Exposure of the colour camera. With exposure_s > 0 the colour image of a frame is the average
+/// of sub-frame renders spread over [t - exposure_s / 2, t + exposure_s / 2] around the frame's
+/// time t (motion blur, motion_blur.h); depth, mask and ground truth stay those of time t.
+struct ExposureParams {
+  double exposure_s = 0.0;   ///< [s] shutter open time; 0 = sharp (one render at t)
+  double max_step_px = 1.5;  ///< [px] largest image motion allowed between two sub-frames
+  int max_subframes = 15;    ///< cap on the sub-frames per frame (render time); even = one less
+};
+
 /// Parameters of the camera motion; every motion is a sum of sinusoids starting at the base pose.
 struct CameraMotionParams {
   CameraMotionKind kind = CameraMotionKind::kXyz;
@@ -38,6 +47,12 @@ struct CameraMotionParams {
   double halfsphere_elevation_deg = 40.0;       ///< [deg] elevation range [0, this] (raised cosine)
   double halfsphere_azimuth_period_s = 10.0;    ///< [s]
   double halfsphere_elevation_period_s = 7.0;   ///< [s]
+  /// [m] rpy: hand-shake translation amplitudes along the base camera's x, y, z axes (0 = none).
+  Eigen::Vector3d rpy_translation_m{0.0, 0.0, 0.0};
+  /// [s] rpy: periods of the hand-shake translation (x, y, z).
+  Eigen::Vector3d rpy_translation_period_s{2.9, 2.4, 3.4};
+  /// Colour exposure (motion blur, motion_blur.h); exposure_s = 0 (the default) = sharp.
+  ExposureParams exposure;
 };
 
 /// Rotation of an optical frame at `position` looking at `target` with world z up (no roll).

@@ -25,6 +25,11 @@ struct SyntheticFrame {
   cv::Mat mask;          ///< CV_16UC1 moving-object id per pixel, 0 = static
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< ground truth
   double dynamic_fraction = 0.0;  ///< fraction of pixels with mask != 0
+  /// Colour renders averaged into colour_clean (motion blur, motion_blur.h); 1 = sharp.
+  int colour_subframes = 1;
+  /// [px] longest image path during the exposure of the surfaces seen at the frame's time, taken
+  /// as static (MaxImagePathPx in motion_blur.h); 0 without exposure.
+  double blur_path_px = 0.0;
 };
 
 /// Renders the frames of one scenario.
@@ -45,7 +50,12 @@ class SyntheticSequence {
   /// All geometry (static room and moving things) at the time of frame `index`.
   SceneGeometry GeometryAt(int index) const;
 
-  /// Renders frame `index` (any index >= 0; beyond scenario().frames the motions continue).
+  /// All geometry at `t_s` [s] after the start of the sequence (sub-frames of the exposure).
+  SceneGeometry GeometryAtTime(double t_s) const;
+
+  /// Renders frame `index` (any index >= 0; beyond scenario().frames the motions continue). With
+  /// scenario().camera.exposure.exposure_s > 0 the colour is motion-blurred (motion_blur.h); depth,
+  /// mask and pose are those of the frame's time, the middle of the exposure.
   SyntheticFrame RenderFrame(int index) const;
 
  private:

@@ -66,6 +66,19 @@ struct StageTimes {
   double total_ms = 0.0;          ///< the whole ProcessFrame call
 };
 
+/// What the back end did after a keyframe (see dslam/backend/slam.h); all zero otherwise.
+struct BackEndStatus {
+  bool ran = false;          ///< local bundle adjustment ran after this frame
+  int window_keyframes = 0;  ///< keyframes in the window
+  int ba_keyframes = 0;      ///< keyframes whose poses local BA optimised
+  int ba_points = 0;         ///< map points it optimised
+  int ba_measurements = 0;   ///< RGB-D measurements (residuals) it used
+  int ba_outliers = 0;       ///< measurements it dropped (chi-square)
+  int ba_iterations = 0;     ///< solver iterations
+  bool ba_rejected = false;  ///< the solution moved a keyframe too far and was not applied
+  double ba_ms = 0.0;        ///< [ms] local BA wall time
+};
+
 /// Everything the odometry reports about one frame.
 struct FrameResult {
   int frame_index = 0;   ///< 0-based count of frames since the last reset
@@ -81,6 +94,7 @@ struct FrameResult {
   std::string message;    ///< why the frame was lost / reset, empty otherwise
   FrameCounts counts;
   StageTimes times;
+  BackEndStatus backend;              ///< filled by Slam after keyframes
   std::vector<ObservedPoint> points;  ///< matched map points with their labels
   std::vector<GraphEdgeView> edges;   ///< front-end graph (kept and culled edges)
 };

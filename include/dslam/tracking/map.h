@@ -59,6 +59,9 @@ struct KeyFrame {
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
   std::vector<PointId> points;     ///< map points it observed (created or matched) when it was made
   FrameMeasurements measurements;  ///< y and C of those points measured with depth in it
+  /// [-] 6x6 information of the front end's pose of this keyframe (PoseResult::information: order
+  /// [dtheta, dt] of a left perturbation of T_camera_world); zero when unknown (first keyframe).
+  Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
 /// Map points and a window of recent keyframes.
@@ -79,6 +82,8 @@ class Map {
 
   /// Recent keyframes, oldest first.
   const std::deque<KeyFrame>& keyframes() const { return keyframes_; }
+  /// The same, for the back end to refine poses and drop measurements (ids and order stay).
+  std::deque<KeyFrame>& mutable_keyframes() { return keyframes_; }
 
   /// Ids of the points observed by the keyframes in the window plus `extra`, plus verified static
   /// points (marked, not candidates) last seen at or after `static_seen_since_frame` (a negative

@@ -15,6 +15,10 @@ class ConstantVelocityModel {
   /// the elapsed time (at most 1 s ahead). The last pose when fewer than two are known.
   Eigen::Isometry3d Predict(double stamp_s) const;
 
+  /// Replaces the last pose by a refined estimate of it (e.g. after bundle adjustment); the
+  /// velocity, in the camera frame, is kept.
+  void CorrectLastPose(const Eigen::Isometry3d& T_world_camera) { T_world_last_ = T_world_camera; }
+
   /// Forgets the velocity (keeps the last pose), e.g. after tracking was lost.
   void ForgetVelocity() { has_velocity_ = false; }
 

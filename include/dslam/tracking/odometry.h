@@ -30,6 +30,13 @@ class Odometry {
   void Reset();
 
   const Map& map() const { return map_; }  ///< the local map (for visualisation)
+  /// The local map, for the back end to refine between frames (Slam); call
+  /// AdoptNewestKeyFramePose() after changing keyframe poses.
+  Map* mutable_map() { return &map_; }
+
+  /// Continues tracking from the newest keyframe's pose in the map (refined by the back end) when
+  /// that keyframe was made from the last tracked frame; otherwise does nothing.
+  void AdoptNewestKeyFramePose();
   const Config& config() const { return config_; }
 
  private:
@@ -59,6 +66,8 @@ class Odometry {
   /// success, current->T_camera_world. False: too few inliers either way.
   bool SolvePose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
                  uint32_t ransac_seed);
+  /// RANSAC pose over the matches of `voters` (EstimateRobustPoseFromMatches).
+  PoseResult RobustPose(const Current& current, PointSelection voters, uint32_t ransac_seed) const;
   bool EnoughInliers(const PoseResult& pose) const;  ///< success and >= min_static_inliers
   std::vector<const FrameMeasurements*> FrontEndReferenceFrames() const;
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);

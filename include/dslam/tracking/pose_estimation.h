@@ -34,10 +34,12 @@ PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>
                                    PointSelection selection, const std::vector<bool>& excluded,
                                    const Config& config);
 
-/// RANSAC over the 3D-3D correspondences of all matches (marked or not), refined by motion-only
-/// BA; `inliers` parallel to `matches`. Deterministic for a given `seed`.
+/// RANSAC over the 3D-3D correspondences of the matches whose map point is `selection`, refined
+/// by motion-only BA; `inliers` parallel to `matches` (matches left out: false). Deterministic for
+/// a given `seed`.
 PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,
                                          const FrameFeatures& features, const PinholeCamera& camera,
-                                         const Config& config, uint32_t seed);
+                                         PointSelection selection, const Config& config,
+                                         uint32_t seed);
 
 }  // namespace dslam

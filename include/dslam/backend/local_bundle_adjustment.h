@@ -1,0 +1,49 @@
+#pragma once
+// Local bundle adjustment (paper Sec. V, back end): the poses of the window's keyframes and the
+// positions of the verified static points they measure, from every RGB-D measurement of those
+// points in those keyframes (paper Eq. rgbd_yik: y_ik = R_k p_i + t_k + n, n ~ N(0, C_ik)).
+//
+// Only verified static points (marked, not candidates) measured in at least
+// `ba_min_point_keyframes` keyframes enter. The oldest `ba_fixed_keyframes` keyframes, and
+// keyframes with fewer than `ba_min_keyframe_points` such points, keep their poses. Two rounds, as
+// in ORB-SLAM2's LocalBundleAdjustment: Huber-robust Levenberg-Marquardt, then the measurements
+// whose squared Mahalanobis error exceeds `ba_chi2` are left out and the rest are optimised
+// again. Measurements stay in their keyframes: static point determination compares them.
+// Points measured in the window but not optimised move with the newest keyframe that measured
+// them.
+//
+// Safeguards against points that are marked but move (a person who stood still long enough to
+// be verified): measurements inconsistent with the front end's poses and map (chi-square with
+// the map point's covariance added) are left out from the start, and a solution that moves a
+// keyframe further than its own frame's measurements allow (`ba_max_correction_chi2` under the
+// front end's pose information) or than `ba_max_correction_m` / `ba_max_correction_deg` is not
+// applied: with a person filling most of the window, the window could follow the person.
+
+#include "dslam/core/backend_config.h"
+#include "dslam/tracking/map.h"
+
+namespace dslam {
+
+/// What one local bundle adjustment did.
+struct LocalBaStats {
+  bool ran = false;         ///< false: too few keyframes or points (nothing changed)
+  int keyframes = 0;        ///< [-] keyframes whose poses were optimised
+  int fixed_keyframes = 0;  ///< [-] keyframes held fixed
+  int points = 0;           ///< [-] map points optimised
+  int measurements = 0;     ///< [-] RGB-D measurements (residuals) in the first round
+  int outliers = 0;         ///< [-] measurements left out by the final chi-square test
+  int iterations = 0;       ///< [-] solver iterations, both rounds
+  double time_ms = 0.0;     ///< [ms] wall time
+  /// [m], [deg] largest move of a keyframe's camera centre and rotation from the front end's pose
+  double largest_correction_m = 0.0, largest_correction_deg = 0.0;
+  /// [-] largest squared Mahalanobis size of a correction under the front end's pose information
+  double largest_correction_chi2 = 0.0;
+  /// The solution moved a keyframe further than ba_max_correction_m / _deg: not applied.
+  bool rejected = false;
+};
+
+/// Optimises the keyframe window of `map` in place (keyframe poses, their measurements' poses and
+/// point positions); see the top of this file. Deterministic (one solver thread).
+LocalBaStats LocalBundleAdjustment(const BackendConfig& config, Map* map);
+
+}  // namespace dslam

@@ -1,0 +1,66 @@
+#pragma once
+// Config section `backend`: local mapping after each keyframe (local bundle adjustment over the
+// keyframe window). A member of the one Config tree (config.h).
+
+#include "dslam/core/config_field.h"
+
+namespace dslam {
+
+/// Local mapping (paper Sec. V, back end): bundle adjustment of the window's keyframes and the
+/// verified static points they measure. Units, ranges and meanings of the fields are given in
+/// Fields() (printed by `dslam_config_doc`).
+struct BackendConfig {
+  bool enabled = false;
+  int ba_fixed_keyframes = 3;
+  int ba_min_keyframes = 2;
+  int ba_min_point_keyframes = 2;
+  int ba_min_keyframe_points = 10;
+  int ba_max_iterations = 10;
+  double ba_huber_delta = 2.796;
+  double ba_chi2 = 7.815;
+  double ba_max_correction_chi2 = 16.81;
+  double ba_max_correction_m = 0.05;
+  double ba_max_correction_deg = 2.0;
+
+  template <typename Self, typename Visitor>
+  static void Fields(Self& s, Visitor&& v) {
+    // Off by default until it beats the front end alone on every benchmark sequence: on the
+    // dynamic scenarios, marked points that move slowly (slow_box) or pause (walking) still pull
+    // the window (BENCHMARKS.md, "Back end: local bundle adjustment").
+    v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
+    // The oldest keyframes of the window keep their poses: they fix the gauge (world frame) and
+    // tie the window to the trajectory already estimated.
+    v(Field("ba_fixed_keyframes", "-", 1, 100, "oldest window keyframes held fixed in local BA"),
+      s.ba_fixed_keyframes);
+    v(Field("ba_min_keyframes", "-", 2, 100, "fewer window keyframes: no local BA"),
+      s.ba_min_keyframes);
+    v(Field("ba_min_point_keyframes", "-", 2, 100,
+            "points measured in fewer window keyframes are not optimised"),
+      s.ba_min_point_keyframes);
+    v(Field("ba_min_keyframe_points", "-", 3, 100000,
+            "keyframes with fewer optimised points keep their pose"),
+      s.ba_min_keyframe_points);
+    // Levenberg-Marquardt iterations; a second round runs without the outliers of the first.
+    v(Field("ba_max_iterations", "-", 1, 1000, "solver iterations per local BA round"),
+      s.ba_max_iterations);
+    v(Field("ba_huber_delta", "-", 0.1, 100.0, "Huber width, whitened 3-dof residual"),
+      s.ba_huber_delta);
+    // 95% quantile of chi-square with 3 dof.
+    v(Field("ba_chi2", "-", 0.1, 1000.0, "observations above this squared error are dropped"),
+      s.ba_chi2);
+    // 99% quantile of chi-square with 6 dof: the back end may refine a keyframe within what its
+    // own frame's measurements allow, not drag it away (e.g. towards a person in the window).
+    v(Field("ba_max_correction_chi2", "-", 0.0, 1e9,
+            "a solution moving a keyframe by more than this squared Mahalanobis distance under "
+            "the front end's pose information is not applied"),
+      s.ba_max_correction_chi2);
+    v(Field("ba_max_correction_m", "m", 0.0, 100.0,
+            "a solution moving a keyframe further than this is not applied"),
+      s.ba_max_correction_m);
+    v(Field("ba_max_correction_deg", "deg", 0.0, 180.0,
+            "a solution rotating a keyframe more than this is not applied"),
+      s.ba_max_correction_deg);
+  }
+};
+
+}  // namespace dslam

@@ -1,0 +1,280 @@
+#include "dslam/backend/local_bundle_adjustment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <tuple>
+#include <unordered_map>
+#include <vector>
+
+#include <ceres/ceres.h>
+
+#include "dslam/core/geometry.h"
+#include "dslam/core/stopwatch.h"
+#include "dslam/tracking/pose_optimizer.h"
+
+namespace dslam {
+namespace {
+
+// Paper Eq. rgbd_yik for keyframe k and point i: r = S (R_k p_i + t_k - y_ik), S^T S = C_ik^-1.
+// Parameters: quaternion of R_camera_world (x y z w), t_camera_world, p_world. Analytic
+// Jacobians, as the motion-only BA's residuals.
+class KeyFrameDepthResidual : public ceres::SizedCostFunction<3, 4, 3, 3> {
+ public:
+  KeyFrameDepthResidual(const Eigen::Vector3d& y, const Eigen::Matrix3d& sqrt_information)
+      : y_(y), sqrt_information_(sqrt_information) {}
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const Eigen::Map<const Eigen::Quaterniond> q(parameters[0]);
+    const Eigen::Map<const Eigen::Vector3d> t(parameters[1]);
+    const Eigen::Map<const Eigen::Vector3d> p(parameters[2]);
+    Eigen::Map<Eigen::Vector3d> r(residuals);
+    r = sqrt_information_ * (q * p + t - y_);
+    if (jacobians == nullptr) return true;
+    if (jacobians[0] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 3, 4, Eigen::RowMajor>> J_q(jacobians[0]);
+      J_q = sqrt_information_ * RotatedPointByQuaternion(q, p);
+    }
+    if (jacobians[1] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J_t(jacobians[1]);
+      J_t = sqrt_information_;
+    }
+    if (jacobians[2] != nullptr) {
+      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J_p(jacobians[2]);
+      J_p = sqrt_information_ * q.toRotationMatrix();
+    }
+    return true;
+  }
+
+  static std::unique_ptr<ceres::CostFunction> Create(const PointMeasurement& m) {
+    return std::make_unique<KeyFrameDepthResidual>(m.y_camera, SqrtInformation(m.covariance));
+  }
+
+ private:
+  Eigen::Vector3d y_;
+  Eigen::Matrix3d sqrt_information_;
+};
+
+struct KeyFramePose {
+  Eigen::Quaterniond q_camera_world;
+  Eigen::Vector3d t_camera_world;
+};
+
+struct Measurement {
+  int keyframe = 0;  // index into the window
+  PointId point = -1;
+  const PointMeasurement* value = nullptr;
+};
+
+// The unknowns and the measurements between them.
+struct Window {
+  std::vector<KeyFramePose> poses;
+  std::unordered_map<PointId, Eigen::Vector3d> points;
+  std::vector<Measurement> measurements;
+};
+
+// Verified static points measured in at least `min_keyframes` window keyframes, and the
+// measurements of them, in keyframe order (deterministic).
+Window CollectWindow(const Map& map, int min_keyframes) {
+  Window window;
+  std::unordered_map<PointId, int> seen_in;
+  for (const KeyFrame& keyframe : map.keyframes()) {
+    for (const auto& [id, m] : keyframe.measurements.by_point) {
+      const MapPoint* point = map.Find(id);
+      if (point != nullptr && point->IsVerifiedStatic()) ++seen_in[id];
+    }
+  }
+  for (size_t k = 0; k < map.keyframes().size(); ++k) {
+    const KeyFrame& keyframe = map.keyframes()[k];
+    const Eigen::Isometry3d& T = keyframe.measurements.T_camera_world;
+    window.poses.push_back({Eigen::Quaterniond(T.rotation()), T.translation()});
+    for (const auto& [id, m] : keyframe.measurements.by_point) {
+      const auto it = seen_in.find(id);
+      if (it == seen_in.end() || it->second < min_keyframes) continue;
+      window.measurements.push_back({static_cast<int>(k), id, &m});
+      window.points.emplace(id, map.Find(id)->p_world);
+    }
+  }
+  return window;
+}
+
+// One Levenberg-Marquardt run over the measurements flagged in `use`. Returns the iterations.
+int SolveRound(const BackendConfig& config, const std::vector<bool>& use, Window* window) {
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  ceres::HuberLoss huber(config.ba_huber_delta);
+  ceres::EigenQuaternionManifold quaternion_manifold;
+  for (size_t i = 0; i < window->measurements.size(); ++i) {
+    if (!use[i]) continue;
+    const Measurement& m = window->measurements[i];
+    KeyFramePose& pose = window->poses[m.keyframe];
+    problem.AddResidualBlock(KeyFrameDepthResidual::Create(*m.value).release(), &huber,
+                             pose.q_camera_world.coeffs().data(), pose.t_camera_world.data(),
+                             window->points.at(m.point).data());
+  }
+  std::vector<int> per_keyframe(window->poses.size(), 0);
+  for (size_t i = 0; i < window->measurements.size(); ++i) {
+    if (use[i]) ++per_keyframe[window->measurements[i].keyframe];
+  }
+  for (size_t k = 0; k < window->poses.size(); ++k) {
+    double* q = window->poses[k].q_camera_world.coeffs().data();
+    double* t = window->poses[k].t_camera_world.data();
+    if (!problem.HasParameterBlock(q)) continue;
+    problem.SetManifold(q, &quaternion_manifold);
+    if (static_cast<int>(k) < config.ba_fixed_keyframes ||
+        per_keyframe[k] < config.ba_min_keyframe_points) {
+      problem.SetParameterBlockConstant(q);
+      problem.SetParameterBlockConstant(t);
+    }
+  }
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_SCHUR;
+  options.max_num_iterations = config.ba_max_iterations;
+  options.num_threads = 1;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  return static_cast<int>(summary.iterations.size());
+}
+
+// Flags the measurements whose squared Mahalanobis error is at most `chi2`.
+std::vector<bool> Inliers(const Window& window, double chi2) {
+  std::vector<bool> inliers(window.measurements.size());
+  for (size_t i = 0; i < window.measurements.size(); ++i) {
+    const Measurement& m = window.measurements[i];
+    const KeyFramePose& pose = window.poses[m.keyframe];
+    const Eigen::Vector3d e =
+        pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
+    inliers[i] = e.dot(m.value->covariance.inverse() * e) <= chi2;
+  }
+  return inliers;
+}
+
+// Measurements consistent with the front end's keyframe poses and map positions: squared
+// Mahalanobis error with C_ik + R C_point R^T at most `chi2`. A point that moved since it was
+// mapped (a person who stood still long enough to be verified, then walked) fails here in the
+// keyframes that saw it elsewhere, so it cannot pull the keyframes towards its motion.
+std::vector<bool> ConsistentWithFrontEnd(const Window& window, const Map& map, double chi2) {
+  std::vector<bool> inliers(window.measurements.size());
+  for (size_t i = 0; i < window.measurements.size(); ++i) {
+    const Measurement& m = window.measurements[i];
+    const KeyFramePose& pose = window.poses[m.keyframe];
+    const Eigen::Matrix3d R = pose.q_camera_world.toRotationMatrix();
+    const Eigen::Vector3d e =
+        R * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
+    const Eigen::Matrix3d covariance =
+        m.value->covariance + RotatedCovariance(R, map.Find(m.point)->cov_world);
+    inliers[i] = e.dot(covariance.inverse() * e) <= chi2;
+  }
+  return inliers;
+}
+
+// Points measured in the window but not optimised (candidates, unmarked points, points of one
+// keyframe) move with the newest keyframe that measured them, p <- T_wc_new T_cw_old p, so that
+// they stay where that keyframe saw them.
+void CarryUnoptimisedPoints(const Window& window, const std::vector<Eigen::Isometry3d>& correction,
+                            Map* map) {
+  std::unordered_map<PointId, int> newest_keyframe;
+  for (size_t k = 0; k < map->keyframes().size(); ++k) {
+    for (const auto& [id, m] : map->keyframes()[k].measurements.by_point) {
+      if (!window.points.count(id)) newest_keyframe[id] = static_cast<int>(k);
+    }
+  }
+  for (const auto& [id, k] : newest_keyframe) {
+    MapPoint* point = map->Find(id);
+    if (point != nullptr) point->p_world = correction[k] * point->p_world;
+  }
+}
+
+// The optimised T_camera_world of keyframe k.
+Eigen::Isometry3d OptimisedPose(const Window& window, size_t k) {
+  Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
+  T_camera_world.linear() = window.poses[k].q_camera_world.normalized().toRotationMatrix();
+  T_camera_world.translation() = window.poses[k].t_camera_world;
+  return T_camera_world;
+}
+
+// Largest move of a keyframe away from the front end's estimate: camera centre [m], rotation
+// [deg].
+std::pair<double, double> LargestCorrection(const Window& window, const Map& map) {
+  double metres = 0.0, degrees = 0.0;
+  for (size_t k = 0; k < map.keyframes().size(); ++k) {
+    const Eigen::Isometry3d T_new = OptimisedPose(window, k).inverse();
+    const Eigen::Isometry3d& T_old = map.keyframes()[k].T_world_camera;
+    metres = std::max(metres, (T_new.translation() - T_old.translation()).norm());
+    const Eigen::AngleAxisd rotation(T_new.rotation() * T_old.rotation().transpose());
+    degrees = std::max(degrees, rotation.angle() * 180.0 / M_PI);
+  }
+  return {metres, degrees};
+}
+
+// Largest squared Mahalanobis size of a keyframe's correction under the front end's pose
+// information (keyframes without one are skipped): how many sigmas the back end moved a pose
+// away from what its own frame's measurements said.
+double LargestCorrectionChi2(const Window& window, const Map& map) {
+  double largest = 0.0;
+  for (size_t k = 0; k < map.keyframes().size(); ++k) {
+    const KeyFrame& keyframe = map.keyframes()[k];
+    if (keyframe.information.isZero()) continue;
+    const Eigen::Isometry3d T_new = OptimisedPose(window, k);
+    const Eigen::Isometry3d& T_old = keyframe.measurements.T_camera_world;
+    Eigen::Matrix<double, 6, 1> delta;
+    const Eigen::AngleAxisd rotation(T_new.rotation() * T_old.rotation().transpose());
+    delta << rotation.angle() * rotation.axis(), T_new.translation() - T_old.translation();
+    largest = std::max(largest, delta.dot(keyframe.information * delta));
+  }
+  return largest;
+}
+
+// Writes poses and points back. Outlier measurements stay in their keyframes: they are the
+// evidence with which static point determination finds points that moved.
+void WriteBack(const Window& window, Map* map) {
+  std::deque<KeyFrame>& keyframes = map->mutable_keyframes();
+  std::vector<Eigen::Isometry3d> correction(keyframes.size());  // T_wc_new T_cw_old
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    const Eigen::Isometry3d T_camera_world = OptimisedPose(window, k);
+    correction[k] = T_camera_world.inverse() * keyframes[k].measurements.T_camera_world;
+    keyframes[k].measurements.T_camera_world = T_camera_world;
+    keyframes[k].T_world_camera = T_camera_world.inverse();
+  }
+  for (const auto& [id, p_world] : window.points) map->Find(id)->p_world = p_world;
+  CarryUnoptimisedPoints(window, correction, map);
+}
+
+}  // namespace
+
+LocalBaStats LocalBundleAdjustment(const BackendConfig& config, Map* map) {
+  Stopwatch clock;
+  LocalBaStats stats;
+  const int num_keyframes = static_cast<int>(map->keyframes().size());
+  if (num_keyframes < config.ba_min_keyframes || num_keyframes <= config.ba_fixed_keyframes) {
+    return stats;
+  }
+  Window window = CollectWindow(*map, config.ba_min_point_keyframes);
+  if (window.points.empty()) return stats;
+  std::vector<bool> use = ConsistentWithFrontEnd(window, *map, config.ba_chi2);
+  stats.iterations = SolveRound(config, use, &window);
+  use = Inliers(window, config.ba_chi2);
+  stats.iterations += SolveRound(config, use, &window);
+  const std::vector<bool> inliers = Inliers(window, config.ba_chi2);
+  std::tie(stats.largest_correction_m, stats.largest_correction_deg) =
+      LargestCorrection(window, *map);
+  stats.largest_correction_chi2 = LargestCorrectionChi2(window, *map);
+  stats.rejected = stats.largest_correction_chi2 > config.ba_max_correction_chi2 ||
+                   stats.largest_correction_m > config.ba_max_correction_m ||
+                   stats.largest_correction_deg > config.ba_max_correction_deg;
+  if (!stats.rejected) WriteBack(window, map);
+
+  stats.ran = true;
+  stats.fixed_keyframes = config.ba_fixed_keyframes;
+  stats.keyframes = num_keyframes - config.ba_fixed_keyframes;
+  stats.points = static_cast<int>(window.points.size());
+  stats.measurements = static_cast<int>(window.measurements.size());
+  stats.outliers = static_cast<int>(std::count(inliers.begin(), inliers.end(), false));
+  stats.time_ms = clock.ElapsedMs();
+  return stats;
+}
+
+}  // namespace dslam

@@ -1,0 +1,37 @@
+#include "dslam/backend/slam.h"
+
+namespace dslam {
+
+Slam::Slam(const Config& config) : odometry_(config) {}
+
+FrameResult Slam::ProcessFrame(const RgbdFrame& frame) {
+  // Front end (Sec. V-A, V-B): features, local-map matching, pose from static points, front-end
+  // static point determination, map management and keyframes.
+  FrameResult result = odometry_.ProcessFrame(frame);
+  if (result.has_pose) refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
+  // Back end (Sec. V): local mapping on the window the new keyframe completes.
+  if (result.keyframe && config().backend.enabled) result.backend = RunLocalMapping();
+  return result;
+}
+
+BackEndStatus Slam::RunLocalMapping() {
+  const LocalBaStats ba = LocalBundleAdjustment(config().backend, odometry_.mutable_map());
+  // Tracking goes on from the refined pose of the keyframe just made (this frame).
+  if (ba.ran && !ba.rejected) {
+    odometry_.AdoptNewestKeyFramePose();
+    refined_.UpdateKeyFrames(map());
+  }
+  BackEndStatus status;
+  status.ran = ba.ran;
+  status.window_keyframes = static_cast<int>(map().keyframes().size());
+  status.ba_keyframes = ba.keyframes;
+  status.ba_points = ba.points;
+  status.ba_measurements = ba.measurements;
+  status.ba_outliers = ba.outliers;
+  status.ba_iterations = ba.iterations;
+  status.ba_rejected = ba.rejected;
+  status.ba_ms = ba.time_ms;
+  return status;
+}
+
+}  // namespace dslam
