@@ -84,8 +84,10 @@ HEADER = ("| sequence | ATE [m] | ATE back end on [m] | ATE static points off [m
 
 def row(name, results):
     on, backend, no_static = (results[v] for v in ("dslam", "backend_on", "static_off"))
+    moving = on.get("true_dynamic", 0) + on.get("missed_dynamic", 0) > 0  # a scene with movers
     seg = (f"{on['dynamic_precision']:.3f} | {on['dynamic_recall']:.3f} | "
-           f"{on['false_dynamic_rate']:.4f}") if "dynamic_recall" in on else "- | - | -"
+           f"{on['false_dynamic_rate']:.4f}") if moving else (
+        f"- | - | {on['false_dynamic_rate']:.4f}" if "false_dynamic_rate" in on else "- | - | -")
     seg += f" | {on['labelled_dynamic_share']:.4f}"
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
     tracked_backend = backend["frames_with_pose"] / max(backend["frames"], 1)

@@ -15,7 +15,7 @@ SCENARIOS="walking walking_static close_person walking_halfsphere slow_box nonri
 mkdir -p "$CACHE" "$OUT/before" "$OUT/after"
 # Scenarios both builds know (a scenario added by the change has no "before").
 known="$("$BEFORE/dslam_synth" --list | awk '{print $1}')"
-SCENARIOS="$(for s in $SCENARIOS; do grep -qx "$s" <<< "$known" && echo "$s"; done)"
+SCENARIOS="$(for s in $SCENARIOS; do if grep -qx "$s" <<< "$known"; then echo "$s"; fi; done)"
 sequences=()
 for scenario in $SCENARIOS; do
   for seed in 1 2 3; do

@@ -100,6 +100,14 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header&
   s.refine_ms = t.refine_ms;
   s.mapping_ms = t.mapping_ms;
   s.total_ms = t.total_ms;
+  const BackEndStatus& b = r.backend;
+  s.backend_ran = b.ran;
+  s.ba_rejected = b.ba_rejected;
+  s.window_keyframes = b.window_keyframes;
+  s.ba_points = b.ba_points;
+  s.ba_outliers = b.ba_outliers;
+  s.ba_iterations = b.ba_iterations;
+  s.ba_ms = b.ba_ms;
   s.latency_ms = latency_ms;
   s.frames_received = counters.received;
   s.frames_processed = counters.processed;

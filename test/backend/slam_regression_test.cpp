@@ -5,26 +5,13 @@
 
 #include "dslam/backend/slam.h"
 #include "dslam/eval/trajectory_metrics.h"
-#include "dslam/synth/sequence.h"
+#include "support/rendered_sequence.h"
 
 namespace dslam {
 namespace {
 
-struct Rendered {
-  std::vector<RgbdFrame> frames;
-  Trajectory groundtruth;
-};
-
-Rendered Render(const std::string& name, int frames) {
-  const synth::SyntheticSequence sequence(synth::MakeScenario(name, 1));
-  Rendered out;
-  for (int i = 0; i < frames; ++i) {
-    synth::SyntheticFrame frame = sequence.RenderFrame(i);
-    out.groundtruth.push_back({frame.frame.stamp_s, frame.T_world_camera});
-    out.frames.push_back(std::move(frame.frame));
-  }
-  return out;
-}
+using Rendered = test::RenderedSequence;
+using test::RenderSequence;
 
 struct RunResult {
   double ate_m = 0.0, refined_ate_m = 0.0;
@@ -52,7 +39,7 @@ RunResult RunSlam(const Rendered& rendered, bool backend) {
 }
 
 TEST(SlamRegression, BackEndKeepsStaticRoomAccurate) {
-  const Rendered rendered = Render("static_room", 90);
+  const Rendered rendered = RenderSequence("static_room", 90);
   const RunResult on = RunSlam(rendered, true);
   const RunResult off = RunSlam(rendered, false);
   EXPECT_EQ(on.with_pose, 90);
@@ -65,7 +52,7 @@ TEST(SlamRegression, BackEndKeepsStaticRoomAccurate) {
 }
 
 TEST(SlamRegression, BackEndOffIsTheFrontEnd) {
-  const Rendered rendered = Render("walking", 45);
+  const Rendered rendered = RenderSequence("walking", 45);
   Config config;
   config.backend.enabled = false;
   Slam slam(config);

@@ -6,8 +6,8 @@
 
 #include "dslam/eval/segmentation_score.h"
 #include "dslam/eval/trajectory_metrics.h"
-#include "dslam/synth/sequence.h"
 #include "dslam/tracking/odometry.h"
+#include "support/rendered_sequence.h"
 
 namespace dslam {
 namespace {
@@ -19,23 +19,8 @@ struct RunResult {
 };
 
 // Rendered once per scenario and shared by the runs with and without static points.
-struct Rendered {
-  std::vector<RgbdFrame> frames;
-  std::vector<cv::Mat> masks;
-  Trajectory groundtruth;
-};
-
-Rendered Render(const std::string& name, int frames) {
-  const synth::SyntheticSequence sequence(synth::MakeScenario(name, 1));
-  Rendered out;
-  for (int i = 0; i < frames; ++i) {
-    synth::SyntheticFrame frame = sequence.RenderFrame(i);
-    out.groundtruth.push_back({frame.frame.stamp_s, frame.T_world_camera});
-    out.frames.push_back(std::move(frame.frame));
-    out.masks.push_back(std::move(frame.mask));
-  }
-  return out;
-}
+using Rendered = test::RenderedSequence;
+using test::RenderSequence;
 
 RunResult RunOdometry(const Rendered& rendered, bool static_points) {
   Config config;
@@ -57,7 +42,7 @@ RunResult RunOdometry(const Rendered& rendered, bool static_points) {
 }
 
 TEST(OdometryRegression, StaticRoomIsAccurateWithAndWithoutStaticPoints) {
-  const Rendered rendered = Render("static_room", 60);
+  const Rendered rendered = RenderSequence("static_room", 60);
   const RunResult on = RunOdometry(rendered, true);
   const RunResult off = RunOdometry(rendered, false);
   EXPECT_EQ(on.with_pose, on.frames);
@@ -68,7 +53,7 @@ TEST(OdometryRegression, StaticRoomIsAccurateWithAndWithoutStaticPoints) {
 }
 
 TEST(OdometryRegression, WalkingPeopleAreSeparatedAndDoNotCaptureThePose) {
-  const Rendered rendered = Render("walking", 90);
+  const Rendered rendered = RenderSequence("walking", 90);
   const RunResult on = RunOdometry(rendered, true);
   const RunResult off = RunOdometry(rendered, false);
   EXPECT_EQ(on.with_pose, on.frames);
