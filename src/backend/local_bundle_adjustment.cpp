@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -139,33 +138,24 @@ int SolveRound(const BackendConfig& config, const std::vector<bool>& use, Window
   return static_cast<int>(summary.iterations.size());
 }
 
-// Flags the measurements whose squared Mahalanobis error is at most `chi2`.
-std::vector<bool> Inliers(const Window& window, double chi2) {
+// Flags the measurements whose squared Mahalanobis error e^T C^-1 e is at most `chi2`, with C the
+// measurement's C_ik, plus R C_point R^T when `map` is given (the map point's own uncertainty).
+// With the map: the measurements consistent with the front end's keyframe poses and map
+// positions. A point that moved since it was mapped (a person who stood still long enough to be
+// verified, then walked) fails that test in the keyframes that saw it elsewhere, so it cannot pull
+// the keyframes towards its motion.
+std::vector<bool> WithinChi2(const Window& window, double chi2, const Map* map = nullptr) {
   std::vector<bool> inliers(window.measurements.size());
   for (size_t i = 0; i < window.measurements.size(); ++i) {
     const Measurement& m = window.measurements[i];
     const KeyFramePose& pose = window.poses[m.keyframe];
     const Eigen::Vector3d e =
         pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
-    inliers[i] = e.dot(m.value->covariance.inverse() * e) <= chi2;
-  }
-  return inliers;
-}
-
-// Measurements consistent with the front end's keyframe poses and map positions: squared
-// Mahalanobis error with C_ik + R C_point R^T at most `chi2`. A point that moved since it was
-// mapped (a person who stood still long enough to be verified, then walked) fails here in the
-// keyframes that saw it elsewhere, so it cannot pull the keyframes towards its motion.
-std::vector<bool> ConsistentWithFrontEnd(const Window& window, const Map& map, double chi2) {
-  std::vector<bool> inliers(window.measurements.size());
-  for (size_t i = 0; i < window.measurements.size(); ++i) {
-    const Measurement& m = window.measurements[i];
-    const KeyFramePose& pose = window.poses[m.keyframe];
-    const Eigen::Matrix3d R = pose.q_camera_world.toRotationMatrix();
-    const Eigen::Vector3d e =
-        R * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
-    const Eigen::Matrix3d covariance =
-        m.value->covariance + RotatedCovariance(R, map.Find(m.point)->cov_world);
+    Eigen::Matrix3d covariance = m.value->covariance;
+    if (map != nullptr) {
+      covariance +=
+          RotatedCovariance(pose.q_camera_world.toRotationMatrix(), map->Find(m.point)->cov_world);
+    }
     inliers[i] = e.dot(covariance.inverse() * e) <= chi2;
   }
   return inliers;
@@ -196,34 +186,36 @@ Eigen::Isometry3d OptimisedPose(const Window& window, size_t k) {
   return T_camera_world;
 }
 
-// Largest move of a keyframe away from the front end's estimate: camera centre [m], rotation
-// [deg].
-std::pair<double, double> LargestCorrection(const Window& window, const Map& map) {
-  double metres = 0.0, degrees = 0.0;
-  for (size_t k = 0; k < map.keyframes().size(); ++k) {
-    const Eigen::Isometry3d T_new = OptimisedPose(window, k).inverse();
-    const Eigen::Isometry3d& T_old = map.keyframes()[k].T_world_camera;
-    metres = std::max(metres, (T_new.translation() - T_old.translation()).norm());
-    const Eigen::AngleAxisd rotation(T_new.rotation() * T_old.rotation().transpose());
-    degrees = std::max(degrees, rotation.angle() * 180.0 / M_PI);
-  }
-  return {metres, degrees};
-}
+// How far the solution moved the keyframes from the front end's estimates (the largest over the
+// window of each measure).
+struct CorrectionSize {
+  double metres = 0.0;   // [m] camera centre
+  double degrees = 0.0;  // [deg] rotation
+  // [-] squared Mahalanobis size under the keyframe's front-end pose information (keyframes
+  // without one are skipped): how many sigmas the back end moved a pose away from what its own
+  // frame's measurements said.
+  double chi2 = 0.0;
+};
 
-// Largest squared Mahalanobis size of a keyframe's correction under the front end's pose
-// information (keyframes without one are skipped): how many sigmas the back end moved a pose
-// away from what its own frame's measurements said.
-double LargestCorrectionChi2(const Window& window, const Map& map) {
-  double largest = 0.0;
+CorrectionSize LargestCorrection(const Window& window, const Map& map) {
+  CorrectionSize largest;
   for (size_t k = 0; k < map.keyframes().size(); ++k) {
     const KeyFrame& keyframe = map.keyframes()[k];
+    const Eigen::Isometry3d T_camera_world = OptimisedPose(window, k);
+    const Eigen::Isometry3d T_world_camera = T_camera_world.inverse();
+    const Eigen::Isometry3d& T_old = keyframe.T_world_camera;
+    largest.metres =
+        std::max(largest.metres, (T_world_camera.translation() - T_old.translation()).norm());
+    const Eigen::AngleAxisd rotation(T_world_camera.rotation() * T_old.rotation().transpose());
+    largest.degrees = std::max(largest.degrees, rotation.angle() * 180.0 / M_PI);
     if (keyframe.information.isZero()) continue;
-    const Eigen::Isometry3d T_new = OptimisedPose(window, k);
-    const Eigen::Isometry3d& T_old = keyframe.measurements.T_camera_world;
+    const Eigen::Isometry3d& T_old_camera_world = keyframe.measurements.T_camera_world;
+    const Eigen::AngleAxisd rotation_camera(T_camera_world.rotation() *
+                                            T_old_camera_world.rotation().transpose());
     Eigen::Matrix<double, 6, 1> delta;
-    const Eigen::AngleAxisd rotation(T_new.rotation() * T_old.rotation().transpose());
-    delta << rotation.angle() * rotation.axis(), T_new.translation() - T_old.translation();
-    largest = std::max(largest, delta.dot(keyframe.information * delta));
+    delta << rotation_camera.angle() * rotation_camera.axis(),
+        T_camera_world.translation() - T_old_camera_world.translation();
+    largest.chi2 = std::max(largest.chi2, delta.dot(keyframe.information * delta));
   }
   return largest;
 }
@@ -254,14 +246,15 @@ LocalBaStats LocalBundleAdjustment(const BackendConfig& config, Map* map) {
   }
   Window window = CollectWindow(*map, config.ba_min_point_keyframes);
   if (window.points.empty()) return stats;
-  std::vector<bool> use = ConsistentWithFrontEnd(window, *map, config.ba_chi2);
+  std::vector<bool> use = WithinChi2(window, config.ba_chi2, map);
   stats.iterations = SolveRound(config, use, &window);
-  use = Inliers(window, config.ba_chi2);
+  use = WithinChi2(window, config.ba_chi2);
   stats.iterations += SolveRound(config, use, &window);
-  const std::vector<bool> inliers = Inliers(window, config.ba_chi2);
-  std::tie(stats.largest_correction_m, stats.largest_correction_deg) =
-      LargestCorrection(window, *map);
-  stats.largest_correction_chi2 = LargestCorrectionChi2(window, *map);
+  const std::vector<bool> inliers = WithinChi2(window, config.ba_chi2);
+  const CorrectionSize correction = LargestCorrection(window, *map);
+  stats.largest_correction_m = correction.metres;
+  stats.largest_correction_deg = correction.degrees;
+  stats.largest_correction_chi2 = correction.chi2;
   stats.rejected = stats.largest_correction_chi2 > config.ba_max_correction_chi2 ||
                    stats.largest_correction_m > config.ba_max_correction_m ||
                    stats.largest_correction_deg > config.ba_max_correction_deg;

@@ -26,9 +26,4 @@ Trajectory RefinedTrajectory::Poses() const {
   return poses;
 }
 
-void RefinedTrajectory::Clear() {
-  frames_.clear();
-  T_world_keyframe_.clear();
-}
-
 }  // namespace dslam

@@ -127,8 +127,8 @@ TrajectoryMetrics EvaluateTrajectory(const Trajectory& estimated, const Trajecto
   TrajectoryMetrics metrics;
   metrics.num_estimated = estimated.size();
   metrics.num_groundtruth = groundtruth.size();
-  const PoseAssociation association =
-      AssociatePoses(estimated, groundtruth, options.max_association_dt_s);
+  metrics.association = AssociatePoses(estimated, groundtruth, options.max_association_dt_s);
+  const PoseAssociation& association = metrics.association;
   metrics.num_associated = association.estimated.size();
   if (metrics.num_associated == 0) {
     throw std::runtime_error("no estimated pose has a ground-truth pose within " +

@@ -152,25 +152,20 @@ dslam::JsonObject MetricsJson(const dslam::TrajectoryMetrics& m, const Arguments
   return json;
 }
 
-// --save-aligned and --save-groundtruth: the associated pairs, the estimate moved by the ATE
-// alignment. EvaluateTrajectory() pairs the poses with AssociatePoses() and
-// options.max_association_dt_s (src/eval/trajectory_metrics.cpp); this repeats that call.
-void SaveAssociatedPoses(const Arguments& args, const dslam::Trajectory& estimated,
-                         const dslam::Trajectory& groundtruth, const dslam::TrajectoryMetrics& m,
-                         const dslam::TrajectoryMetricsOptions& options) {
-  const bool aligned = args.values.count("save-aligned") > 0;
-  const bool matched = args.values.count("save-groundtruth") > 0;
-  if (!aligned && !matched) return;
-  const dslam::PoseAssociation pairs =
-      dslam::AssociatePoses(estimated, groundtruth, options.max_association_dt_s);
-  if (aligned) {
+// --save-aligned and --save-groundtruth: the pairs the metrics used, the estimate moved by the
+// ATE alignment.
+void SaveAssociatedPoses(const Arguments& args, const dslam::TrajectoryMetrics& m) {
+  const dslam::PoseAssociation& pairs = m.association;
+  if (args.values.count("save-aligned")) {
     dslam::Trajectory moved = pairs.estimated;
     for (dslam::StampedPose& pose : moved) {
       pose.T_world_camera = m.T_gtworld_estworld * pose.T_world_camera;
     }
     dslam::WriteTumTrajectory(args.values.at("save-aligned"), moved);
   }
-  if (matched) dslam::WriteTumTrajectory(args.values.at("save-groundtruth"), pairs.groundtruth);
+  if (args.values.count("save-groundtruth")) {
+    dslam::WriteTumTrajectory(args.values.at("save-groundtruth"), pairs.groundtruth);
+  }
 }
 
 int Run(const Arguments& args) {
@@ -206,7 +201,7 @@ int Run(const Arguments& args) {
     dslam::WriteJsonFile(args.values.at("json"),
                          MetricsJson(metrics, args, correction_name, options));
   }
-  SaveAssociatedPoses(args, estimated, groundtruth, metrics, options);
+  SaveAssociatedPoses(args, metrics);
   return 0;
 }
 

@@ -61,7 +61,9 @@ TEST(SlamRegression, BackEndOffIsTheFrontEnd) {
     const FrameResult a = slam.ProcessFrame(frame);
     const FrameResult b = odometry.ProcessFrame(frame);
     ASSERT_EQ(a.has_pose, b.has_pose);
-    if (a.has_pose) EXPECT_TRUE(a.T_world_camera.isApprox(b.T_world_camera, 0.0));
+    if (a.has_pose) {
+      EXPECT_TRUE(a.T_world_camera.isApprox(b.T_world_camera, 0.0));
+    }
   }
 }
 

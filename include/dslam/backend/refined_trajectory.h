@@ -29,9 +29,6 @@ class RefinedTrajectory {
   /// The recorded frames with their refined poses, in the order they were added.
   Trajectory Poses() const;
 
-  /// Forgets everything.
-  void Clear();
-
  private:
   struct Frame {
     double stamp_s;

@@ -90,9 +90,10 @@ Coverage ComputeCoverage(const std::vector<double>& estimated_stamps_s, double s
 
 /// Everything EvaluateTrajectory() measures.
 struct TrajectoryMetrics {
-  size_t num_estimated = 0;    ///< poses in the estimate
-  size_t num_groundtruth = 0;  ///< poses in the ground truth
-  size_t num_associated = 0;   ///< associated pairs (ATE and RPE use only these)
+  size_t num_estimated = 0;     ///< poses in the estimate
+  size_t num_groundtruth = 0;   ///< poses in the ground truth
+  size_t num_associated = 0;    ///< associated pairs (ATE and RPE use only these)
+  PoseAssociation association;  ///< the pairs (AssociatePoses() with max_association_dt_s)
   Eigen::Isometry3d T_gtworld_estworld = Eigen::Isometry3d::Identity();  ///< ATE alignment
   ErrorStatistics ate_m;  ///< [m] |p_gt - T_gtworld_estworld * p_est| over associated pairs
   RelativePoseError rpe;  ///< see RelativePoseError
