@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace dslam {
@@ -12,7 +13,8 @@ std::string StatusCsvHeader() {
          "candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
          "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms,"
-         "window_keyframes,ba_points,ba_outliers,ba_iterations,ba_ms";
+         "window_keyframes,ba_points,ba_outliers,ba_iterations,ba_ms,"
+         "spd_points,spd_culled_edges,spd_unmarked,spd_ms";
 }
 
 std::string StatusCsvRow(const FrameResult& r) {
@@ -22,14 +24,15 @@ std::string StatusCsvRow(const FrameResult& r) {
   std::snprintf(buffer, sizeof(buffer),
                 "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%."
                 "3f,%d,%d,%d,"
-                "%d,%.3f",
+                "%d,%.3f,%d,%d,%d,%.3f",
                 r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
                 c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
                 c.candidate_points, c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges,
                 c.map_points, c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
                 t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms,
                 r.backend.window_keyframes, r.backend.ba_points, r.backend.ba_outliers,
-                r.backend.ba_iterations, r.backend.ba_ms);
+                r.backend.ba_iterations, r.backend.ba_ms, r.backend.spd_points,
+                r.backend.spd_culled_edges, r.backend.spd_unmarked, r.backend.spd_ms);
   return buffer;
 }
 
@@ -57,28 +60,36 @@ void RunSummary::Add(const FrameResult& result) {
   if (result.state == TrackingState::kTracking || result.state == TrackingState::kRecovered) {
     times_.push_back(result.times);
     graph_points_.push_back(result.counts.graph_points);
-    frame_ms_.push_back(result.times.total_ms + result.backend.ba_ms);
+    frame_ms_.push_back(result.times.total_ms + result.backend.ba_ms + result.backend.spd_ms);
   }
-  if (result.backend.ran) backend_.push_back(result.backend);
+  if (result.backend.ran || result.backend.spd_ran) backend_.push_back(result.backend);
 }
 
 double RunSummary::BackEndQuantile(const std::string& field, double fraction) const {
+  using Getter = double (*)(const BackEndStatus&);
+  static const std::map<std::string, Getter> kFields = {
+      {"ba_ms", [](const BackEndStatus& b) { return b.ba_ms; }},
+      {"ba_points", [](const BackEndStatus& b) { return double(b.ba_points); }},
+      {"ba_keyframes", [](const BackEndStatus& b) { return double(b.ba_keyframes); }},
+      {"ba_measurements", [](const BackEndStatus& b) { return double(b.ba_measurements); }},
+      {"ba_outliers", [](const BackEndStatus& b) { return double(b.ba_outliers); }},
+      {"ba_iterations", [](const BackEndStatus& b) { return double(b.ba_iterations); }},
+      {"spd_ms", [](const BackEndStatus& b) { return b.spd_ms; }},
+      {"spd_graph_ms", [](const BackEndStatus& b) { return b.spd_graph_ms; }},
+      {"spd_culling_ms", [](const BackEndStatus& b) { return b.spd_culling_ms; }},
+      {"spd_components_ms", [](const BackEndStatus& b) { return b.spd_components_ms; }},
+      {"spd_keyframes", [](const BackEndStatus& b) { return double(b.spd_keyframes); }},
+      {"spd_points", [](const BackEndStatus& b) { return double(b.spd_points); }},
+      {"spd_edges", [](const BackEndStatus& b) { return double(b.spd_edges); }},
+      {"spd_culled_edges", [](const BackEndStatus& b) { return double(b.spd_culled_edges); }},
+      {"spd_unmarked", [](const BackEndStatus& b) { return double(b.spd_unmarked); }},
+  };
+  const auto getter = kFields.find(field);
+  if (getter == kFields.end()) throw std::invalid_argument("unknown back-end field " + field);
+  const bool spd_field = field.rfind("spd_", 0) == 0;  // over the runs of that stage only
   std::vector<double> values;
   for (const BackEndStatus& b : backend_) {
-    if (field == "ba_ms")
-      values.push_back(b.ba_ms);
-    else if (field == "ba_points")
-      values.push_back(b.ba_points);
-    else if (field == "ba_keyframes")
-      values.push_back(b.ba_keyframes);
-    else if (field == "ba_measurements")
-      values.push_back(b.ba_measurements);
-    else if (field == "ba_outliers")
-      values.push_back(b.ba_outliers);
-    else if (field == "ba_iterations")
-      values.push_back(b.ba_iterations);
-    else
-      throw std::invalid_argument("unknown back-end field " + field);
+    if (spd_field ? b.spd_ran : b.ran) values.push_back(getter->second(b));
   }
   return Quantile(values, fraction);
 }

@@ -108,6 +108,11 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header&
   s.ba_outliers = b.ba_outliers;
   s.ba_iterations = b.ba_iterations;
   s.ba_ms = b.ba_ms;
+  s.spd_ran = b.spd_ran;
+  s.spd_points = b.spd_points;
+  s.spd_culled_edges = b.spd_culled_edges;
+  s.spd_unmarked = b.spd_unmarked;
+  s.spd_ms = b.spd_ms;
   s.latency_ms = latency_ms;
   s.frames_received = counters.received;
   s.frames_processed = counters.processed;

@@ -7,6 +7,8 @@
 
 #include <Eigen/LU>
 
+#include "dslam/core/geometry.h"
+
 namespace dslam {
 namespace internal {
 namespace {
@@ -33,6 +35,10 @@ std::vector<std::vector<std::pair<int, int>>> ObservationsByPoint(const Correlat
 
 std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& input,
                                                       const std::vector<GraphEdge>& edges) {
+  if (!input.rotation_covariance.empty() &&
+      input.rotation_covariance.size() != input.T_camera_world.size()) {
+    throw std::invalid_argument("rotation_covariance needs one matrix per frame");
+  }
   const auto by_point = ObservationsByPoint(input);
   const int num_points = static_cast<int>(by_point.size());
   std::vector<CorrelationMeasurement> measurements;
@@ -60,7 +66,11 @@ std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& in
       m.edge = e;
       m.frame = oi.frame;
       m.z = oi.y_camera - oj.y_camera;
-      m.information = (oi.covariance + oj.covariance).inverse();
+      Eigen::Matrix3d covariance = oi.covariance + oj.covariance;
+      if (!input.rotation_covariance.empty()) {
+        covariance += Skew(m.z) * input.rotation_covariance[oi.frame] * Skew(m.z).transpose();
+      }
+      m.information = covariance.inverse();
       m.R_camera_world = input.T_camera_world[oi.frame].linear();
       measurements.push_back(m);
       ++ia;

@@ -132,7 +132,10 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
   }
   json.AddNumber("median_frame_ms", summary.MedianFrameMs(), kDigits)
       .AddInteger("backend_runs", summary.backend_runs());
-  for (const char* field : {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations"}) {
+  for (const char* field :
+       {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations", "spd_ms",
+        "spd_graph_ms", "spd_culling_ms", "spd_components_ms", "spd_points", "spd_edges",
+        "spd_culled_edges", "spd_unmarked"}) {
     json.AddNumber(std::string("median_") + field, summary.BackEndQuantile(field, 0.5), kDigits)
         .AddNumber(std::string("p95_") + field, summary.BackEndQuantile(field, 0.95), kDigits);
   }

@@ -11,6 +11,10 @@ namespace dslam {
 /// Fields() (printed by `dslam_config_doc`).
 struct BackendConfig {
   bool enabled = false;
+  bool spd_enabled = true;
+  int spd_min_covisible_points = 20;
+  bool spd_unmark_isolated = false;
+  double spd_rotation_sigma_deg = 0.0;
   int ba_fixed_keyframes = 3;
   int ba_min_keyframes = 2;
   int ba_min_point_keyframes = 2;
@@ -28,6 +32,24 @@ struct BackendConfig {
     // dynamic scenarios, marked points that move slowly (slow_box) or pause (walking) still pull
     // the window (BENCHMARKS.md, "Back end: local bundle adjustment").
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
+    // Algorithm 1 (window_static_points.h) runs before local BA, which then uses the points that
+    // stayed marked. Needs static_points.enabled.
+    v(Flag("spd_enabled", "back-end static point determination over the window"),
+      s.spd_enabled);
+    v(Field("spd_min_covisible_points", "-", 1, 100000,
+            "window keyframes sharing fewer measured points with the new keyframe are left out"),
+      s.spd_min_covisible_points);
+    // The paper unmarks every point outside the largest-volume component, isolated points (all
+    // their edges inconsistent) included. Off by default: in static scenes these are mostly
+    // points with a bad measurement, not movers (BENCHMARKS.md, "Back end").
+    v(Flag("spd_unmark_isolated", "points whose tested edges are all inconsistent lose their mark"),
+      s.spd_unmark_isolated);
+    // Each keyframe's rotation error turns an edge l into an error of about l x dtheta in its
+    // measurement; the front end's pose information does not see drift, so this sigma is added
+    // to every window measurement's covariance (CorrelationInput::rotation_covariance).
+    v(Field("spd_rotation_sigma_deg", "deg", 0.0, 10.0,
+            "rotation uncertainty of a window keyframe in the edge tests"),
+      s.spd_rotation_sigma_deg);
     // The oldest keyframes of the window keep their poses: they fix the gauge (world frame) and
     // tie the window to the trajectory already estimated.
     v(Field("ba_fixed_keyframes", "-", 1, 100, "oldest window keyframes held fixed in local BA"),

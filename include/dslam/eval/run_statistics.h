@@ -45,11 +45,13 @@ class RunSummary {
   /// the back end (what a synchronous run spends per frame).
   double MedianFrameMs() const { return Median(frame_ms_); }
 
-  /// Keyframes after which the back end's local bundle adjustment ran.
+  /// Keyframes after which the back end ran (local BA or back-end static point determination).
   int backend_runs() const { return static_cast<int>(backend_.size()); }
 
-  /// The `fraction`-quantile over the back-end runs of "ba_ms", "ba_points", "ba_keyframes",
-  /// "ba_measurements", "ba_outliers" or "ba_iterations".
+  /// The `fraction`-quantile of a BackEndStatus field ("ba_ms", "ba_points", "ba_keyframes",
+  /// "ba_measurements", "ba_outliers", "ba_iterations", or "spd_" + ms, graph_ms, culling_ms,
+  /// components_ms, keyframes, points, edges, culled_edges, unmarked) over the keyframes after
+  /// which that stage (local BA, or back-end static point determination for "spd_") ran.
   double BackEndQuantile(const std::string& field, double fraction) const;
 
   /// [-] Share of matched-point observations labelled dynamic (unmarked), over all frames: on a

@@ -45,6 +45,10 @@ struct CorrelationInput {
   std::vector<Eigen::Vector3d> points_world;      ///< [m] initial point estimates, world frame
   std::vector<Eigen::Isometry3d> T_camera_world;  ///< per frame: maps world points into camera k
   std::vector<PointObservation> observations;     ///< any order; at most one per (point, frame)
+  /// [rad^2] per frame, or empty: covariance of a rotation error dtheta of frame k (left
+  /// perturbation of T_camera_world). It adds [z]x Sigma [z]x^T to the covariance of each
+  /// measurement z_ijk of that frame (z_ijk = R_k l_ij turns by dtheta; translation cancels).
+  std::vector<Eigen::Matrix3d> rotation_covariance;
 };
 
 /// Parameters of the culling (mirrors StaticPointsConfig).

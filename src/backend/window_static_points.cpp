@@ -1,0 +1,121 @@
+#include "dslam/backend/window_static_points.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include "dslam/core/stopwatch.h"
+#include "dslam/static_points/static_points.h"
+
+namespace dslam {
+namespace {
+
+// Indices of the window keyframes sharing at least `min_shared` measured points with the newest
+// keyframe (the newest included), oldest first: the paper's "keyframes that have covisibility
+// with the currently added keyframe".
+std::vector<int> CovisibleKeyFrames(const Map& map, int min_shared) {
+  const auto& keyframes = map.keyframes();
+  const FrameMeasurements& newest = keyframes.back().measurements;
+  std::vector<int> covisible;
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    int shared = 0;
+    for (const auto& entry : keyframes[k].measurements.by_point) {
+      shared += newest.by_point.count(entry.first) > 0;
+    }
+    if (shared >= min_shared || k + 1 == keyframes.size()) covisible.push_back(static_cast<int>(k));
+  }
+  return covisible;
+}
+
+// The problem of Algorithm 1: the marked points measured in at least two of `keyframes` (in
+// increasing id order), all their measurements there, and those keyframes' poses.
+CorrelationInput CollectProblem(const Map& map, const std::vector<int>& keyframes,
+                                double rotation_variance, std::vector<PointId>* ids) {
+  std::unordered_map<PointId, int> measured_in;
+  for (int k : keyframes) {
+    for (const auto& entry : map.keyframes()[k].measurements.by_point) {
+      const MapPoint* point = map.Find(entry.first);
+      if (point != nullptr && point->marked) ++measured_in[entry.first];
+    }
+  }
+  ids->clear();
+  for (const auto& [id, count] : measured_in) {
+    if (count >= 2) ids->push_back(id);
+  }
+  std::sort(ids->begin(), ids->end());
+  std::unordered_map<PointId, int> index_of;
+  CorrelationInput input;
+  for (PointId id : *ids) {
+    index_of.emplace(id, static_cast<int>(input.points_world.size()));
+    input.points_world.push_back(map.Find(id)->p_world);
+  }
+  for (size_t f = 0; f < keyframes.size(); ++f) {
+    const FrameMeasurements& frame = map.keyframes()[keyframes[f]].measurements;
+    input.T_camera_world.push_back(frame.T_camera_world);
+    input.rotation_covariance.push_back(rotation_variance * Eigen::Matrix3d::Identity());
+    for (PointId id : *ids) {  // increasing id: the same order in every run
+      const auto found = frame.by_point.find(id);
+      if (found == frame.by_point.end()) continue;
+      PointObservation observation;
+      observation.point = index_of.at(id);
+      observation.frame = static_cast<int>(f);
+      observation.y_camera = found->second.y_camera;
+      observation.covariance = found->second.covariance;
+      input.observations.push_back(observation);
+    }
+  }
+  return input;
+}
+
+// A point the window found moving: it stops driving motion estimation. The front end marks it
+// again only after tracking.remark_frames consecutive frames in which it looks static.
+void Unmark(int remark_frames, MapPoint* point) {
+  point->marked = false;
+  point->candidate = false;
+  point->static_streak = 0;
+  point->dynamic_frames = std::max(point->dynamic_frames + 1, remark_frames);
+}
+
+bool LosesMark(PointLabel label, bool unmark_isolated) {
+  return label == PointLabel::kDynamic || (unmark_isolated && label == PointLabel::kIsolated);
+}
+
+}  // namespace
+
+WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map* map) {
+  WindowStaticPointsStats stats;
+  const Stopwatch total;
+  if (map->keyframes().size() < 2) return stats;
+  const std::vector<int> keyframes =
+      CovisibleKeyFrames(*map, config.backend.spd_min_covisible_points);
+  std::vector<PointId> ids;
+  const double rotation_sigma = config.backend.spd_rotation_sigma_deg * M_PI / 180.0;
+  const CorrelationInput input =
+      CollectProblem(*map, keyframes, rotation_sigma * rotation_sigma, &ids);
+  if (keyframes.size() < 2 ||
+      static_cast<int>(ids.size()) < config.static_points.min_graph_points) {
+    return stats;
+  }
+  const StaticPointsResult result = DetermineStaticPoints(input, config.static_points);
+  if (result.static_component >= 0) {
+    for (size_t i = 0; i < ids.size(); ++i) {
+      if (!LosesMark(result.labels[i], config.backend.spd_unmark_isolated)) continue;
+      Unmark(config.tracking.remark_frames, map->Find(ids[i]));
+      ++stats.unmarked;
+    }
+  }
+  stats.ran = true;
+  stats.keyframes = static_cast<int>(keyframes.size());
+  stats.points = result.stats.points;
+  stats.edges = result.stats.edges;
+  stats.measurements = result.stats.measurements;
+  stats.culled_edges = result.stats.culled_edges;
+  stats.graph_ms = result.stats.graph_ms;
+  stats.culling_ms = result.stats.culling_ms;
+  stats.components_ms = result.stats.components_ms;
+  stats.total_ms = total.ElapsedMs();
+  return stats;
+}
+
+}  // namespace dslam
