@@ -100,6 +100,7 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header&
   s.refine_ms = t.refine_ms;
   s.mapping_ms = t.mapping_ms;
   s.total_ms = t.total_ms;
+  s.tracking_ms = t.tracking_ms;
   const BackEndStatus& b = r.backend;
   s.backend_ran = b.ran;
   s.ba_rejected = b.ba_rejected;
@@ -108,6 +109,8 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header&
   s.ba_outliers = b.ba_outliers;
   s.ba_iterations = b.ba_iterations;
   s.ba_ms = b.ba_ms;
+  s.backend_delivered = r.backend_thread.delivered;
+  s.backend_backlog = r.backend_thread.backlog;
   s.latency_ms = latency_ms;
   s.frames_received = counters.received;
   s.frames_processed = counters.processed;
