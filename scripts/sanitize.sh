@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds dslam with a sanitizer in a workspace of its own and runs that sanitizer's checks; exit 0
-# when it reported nothing in dslam code. Not part of scripts/test.sh (a sanitized build and run
-# take tens of minutes on 2 cores).
+# when it reported nothing in dslam code. Not part of scripts/test.sh: it is a second,
+# instrumented build of dslam, and the runs are several times slower.
 #
 # Usage: scripts/sanitize.sh KIND
 #   thread  ThreadSanitizer, workspace build/tsan: test_slam_threads (the back-end thread against
