@@ -55,6 +55,23 @@ macro(dslam_part name)
   endif()
 endmacro()
 
+# DSLAM_SANITIZE (cache variable: thread, address, undefined or empty): every dslam library, tool
+# and gtest is compiled with -fsanitize=<kind> -g -O1 and linked with -fsanitize=<kind>; per
+# target, never a global flag, so gtest and other packages built in the workspace stay as they are.
+# scripts/sanitize.sh configures it in a workspace of its own (build/tsan, ...).
+set(DSLAM_SANITIZE "" CACHE STRING "sanitizer of the dslam targets: thread, address, undefined")
+if(DSLAM_SANITIZE AND NOT DSLAM_SANITIZE MATCHES "^(thread|address|undefined)$")
+  message(FATAL_ERROR "DSLAM_SANITIZE=${DSLAM_SANITIZE}: use thread, address or undefined")
+endif()
+
+function(dslam_sanitize target)
+  if(DSLAM_SANITIZE)
+    target_compile_options(${target} PRIVATE
+      -fsanitize=${DSLAM_SANITIZE} -g -O1 -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=${DSLAM_SANITIZE})
+  endif()
+endfunction()
+
 # dslam_test(NAME SOURCES... LIBRARIES libs...): a gtest of the part's test folder, linked with
 # gtest_main; tests include their shared helpers as "support/..." and "<part>/...".
 function(dslam_test name)
@@ -63,6 +80,7 @@ function(dslam_test name)
   target_link_libraries(${name} ${T_LIBRARIES} gtest_main)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test)
   target_compile_definitions(${name} PRIVATE DSLAM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  dslam_sanitize(${name})
 endfunction()
 
 # dslam_library(PART SOURCES... [LINK libs...]): the part's library dslam_<PART>, linked with the
@@ -76,6 +94,7 @@ function(dslam_library part)
   # Every symbol resolved at link time: a declaration defined in another part's library that
   # this one does not link fails the build, not the nodelet's loading.
   target_link_options(dslam_${part} PRIVATE -Wl,--no-undefined)
+  dslam_sanitize(dslam_${part})
   install(TARGETS dslam_${part}
     ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
     LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
@@ -90,5 +109,6 @@ function(dslam_tool name)
   add_executable(${name}_main ${E_SOURCES})
   set_target_properties(${name}_main PROPERTIES OUTPUT_NAME ${name})
   target_link_libraries(${name}_main ${E_LINK})
+  dslam_sanitize(${name}_main)
   install(TARGETS ${name}_main RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 endfunction()

@@ -13,6 +13,7 @@ std::string StatusCsvHeader() {
          "candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
          "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms,"
+         "tracking_ms,backlog,backend_delivered,"
          "window_keyframes,ba_points,ba_outliers,ba_iterations,ba_ms,"
          "spd_points,spd_culled_edges,spd_unmarked,spd_ms";
 }
@@ -20,16 +21,17 @@ std::string StatusCsvHeader() {
 std::string StatusCsvRow(const FrameResult& r) {
   const FrameCounts& c = r.counts;
   const StageTimes& t = r.times;
-  char buffer[512];
+  char buffer[640];
   std::snprintf(buffer, sizeof(buffer),
                 "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%."
-                "3f,%d,%d,%d,"
-                "%d,%.3f,%d,%d,%d,%.3f",
+                "3f,%.3f,%d,%d,"
+                "%d,%d,%d,%d,%.3f,%d,%d,%d,%.3f",
                 r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
                 c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
                 c.candidate_points, c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges,
                 c.map_points, c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
-                t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms,
+                t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms, t.tracking_ms,
+                r.backend_thread.backlog, r.backend_thread.delivered ? 1 : 0,
                 r.backend.window_keyframes, r.backend.ba_points, r.backend.ba_outliers,
                 r.backend.ba_iterations, r.backend.ba_ms, r.backend.spd_points,
                 r.backend.spd_culled_edges, r.backend.spd_unmarked, r.backend.spd_ms);
@@ -60,9 +62,17 @@ void RunSummary::Add(const FrameResult& result) {
   if (result.state == TrackingState::kTracking || result.state == TrackingState::kRecovered) {
     times_.push_back(result.times);
     graph_points_.push_back(result.counts.graph_points);
-    frame_ms_.push_back(result.times.total_ms + result.backend.ba_ms + result.backend.spd_ms);
+    // A run reported late (threaded) did not cost this frame.
+    const bool own_run = !result.backend_thread.delivered;
+    frame_ms_.push_back(result.times.total_ms + (own_run ? result.backend.ba_ms + result.backend.spd_ms : 0.0));
+    tracking_ms_.push_back(result.times.tracking_ms);
   }
-  if (result.backend.ran || result.backend.spd_ran) backend_.push_back(result.backend);
+  max_backlog_ = std::max(max_backlog_, result.backend_thread.backlog);
+  AddBackEnd(result.backend);
+}
+
+void RunSummary::AddBackEnd(const BackEndStatus& status) {
+  if (status.ran || status.spd_ran) backend_.push_back(status);
 }
 
 double RunSummary::BackEndQuantile(const std::string& field, double fraction) const {

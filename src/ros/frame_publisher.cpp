@@ -100,6 +100,7 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header&
   s.refine_ms = t.refine_ms;
   s.mapping_ms = t.mapping_ms;
   s.total_ms = t.total_ms;
+  s.tracking_ms = t.tracking_ms;
   const BackEndStatus& b = r.backend;
   s.backend_ran = b.ran;
   s.ba_rejected = b.ba_rejected;
@@ -113,6 +114,8 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header&
   s.spd_culled_edges = b.spd_culled_edges;
   s.spd_unmarked = b.spd_unmarked;
   s.spd_ms = b.spd_ms;
+  s.backend_delivered = r.backend_thread.delivered;
+  s.backend_backlog = r.backend_thread.backlog;
   s.latency_ms = latency_ms;
   s.frames_received = counters.received;
   s.frames_processed = counters.processed;

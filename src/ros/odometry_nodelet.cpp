@@ -30,7 +30,8 @@ void OdometryNodelet::onInit() {
   try {
     LoadRosParams(pnh, &config, &config_);
     if (!config_.camera_yaml.empty()) yaml_camera_ = LoadCameraYaml(config_.camera_yaml).camera;
-    slam_ = std::make_unique<Slam>(config);
+    slam_ = std::make_unique<Slam>(
+        config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous);
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
     return;

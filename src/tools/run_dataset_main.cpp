@@ -1,15 +1,19 @@
 // dslam_run_dataset: runs dslam (front end and, after keyframes, the back end; synchronous and
-// deterministic) on a TUM-layout folder and writes the trajectory (every tracked frame's pose as
-// estimated at that frame, TUM format, camera optical frame), a per-frame status CSV and a summary.
-// On synthetic folders (mask.txt present) it also scores the static/dynamic labels.
+// deterministic by default, or with the back end on its own thread as in the ROS node) on a
+// TUM-layout folder, optionally at a fixed frame rate, and writes the trajectory (every tracked
+// frame's pose as estimated at that frame, TUM format, camera optical frame), a per-frame status
+// CSV and a summary. On synthetic folders (mask.txt present) it also scores the labels.
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -30,6 +34,9 @@ struct Args {
   std::string backend;             ///< "on", "off" or empty (the config's backend.enabled)
   int max_frames = -1;
   bool quiet = false;
+  bool threads = false;  ///< the back end on its own thread (BackEndMode::kThreaded)
+  /// [Hz] --rate: frame i is handed over no earlier than start + i / rate_hz; 0: at once.
+  double rate_hz = 0.0;
 };
 
 int Usage() {
@@ -39,7 +46,7 @@ int Usage() {
                "[--backend on|off] [--config params.yaml]\n"
                "                         [--summary OUT.json] [--segmentation OUT.csv] "
                "[--max-frames N] [--quiet]\n"
-               "                         [--refined-trajectory OUT.txt]\n";
+               "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n";
   return 2;
 }
 
@@ -48,6 +55,10 @@ bool Parse(int argc, char** argv, Args* args) {
     const std::string key = argv[i];
     if (key == "--quiet") {
       args->quiet = true;
+      continue;
+    }
+    if (key == "--threads") {
+      args->threads = true;
       continue;
     }
     if (i + 1 >= argc) return false;
@@ -70,6 +81,8 @@ bool Parse(int argc, char** argv, Args* args) {
       args->segmentation = value;
     else if (key == "--max-frames")
       args->max_frames = std::stoi(value);
+    else if (key == "--rate" && std::stod(value) > 0.0)
+      args->rate_hz = std::stod(value);
     else if (key == "--static-points" && (value == "on" || value == "off"))
       args->static_points = value;
     else if (key == "--backend" && (value == "on" || value == "off"))
@@ -116,7 +129,7 @@ void WriteSegmentationRow(int frame, const dslam::SegmentationScore& s, std::ofs
 // `scored`: the folder has masks; "static_points" is config.static_points.enabled.
 dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
                               const dslam::SegmentationScore& score, bool scored,
-                              const dslam::Config& config) {
+                              const dslam::Config& config, const Args& args) {
   constexpr int kDigits = 6;  // significant digits of every number
   dslam::JsonObject json;
   json.AddInteger("frames", summary.frames())
@@ -124,6 +137,8 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
       .AddInteger("lost_frames", summary.lost_frames())
       .AddBool("static_points", config.static_points.enabled)
       .AddBool("backend", config.backend.enabled)
+      .AddBool("threads", args.threads)
+      .AddNumber("rate_hz", args.rate_hz, kDigits)
       .AddNumber("median_graph_points", summary.MedianGraphPoints(), kDigits)
       .AddNumber("labelled_dynamic_share", summary.LabelledDynamicShare(), kDigits);
   for (const char* stage :
@@ -131,7 +146,10 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
     json.AddNumber(std::string("median_") + stage + "_ms", summary.MedianMs(stage), kDigits);
   }
   json.AddNumber("median_frame_ms", summary.MedianFrameMs(), kDigits)
-      .AddInteger("backend_runs", summary.backend_runs());
+      .AddNumber("median_tracking_ms", summary.TrackingQuantile(0.5), kDigits)
+      .AddNumber("p95_tracking_ms", summary.TrackingQuantile(0.95), kDigits)
+      .AddInteger("backend_runs", summary.backend_runs())
+      .AddInteger("max_backlog", summary.max_backlog());
   for (const char* field :
        {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations", "spd_ms",
         "spd_graph_ms", "spd_culling_ms", "spd_components_ms", "spd_points", "spd_edges",
@@ -152,50 +170,72 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
   return json;
 }
 
-int Run(const Args& args) {
-  dslam::Config config;
-  if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
-  if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
-  if (!args.backend.empty()) config.backend.enabled = args.backend == "on";
-  const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
-  const auto masks = ReadMasks(args.dataset);
-  dslam::Slam slam(config);
-  dslam::Trajectory trajectory;
+// Everything a run collects while frames are processed.
+struct Outputs {
+  dslam::Trajectory trajectory;  ///< causal poses
   dslam::RunSummary summary;
   dslam::SegmentationScore score;
-  std::ofstream status, segmentation;
+  std::map<double, std::string> masks;  ///< mask image by colour stamp; empty: not synthetic
+  std::ofstream status, segmentation;   ///< the CSVs asked for (closed when not)
+};
+
+// Reads the masks and opens the CSVs the arguments ask for, with their headers.
+void OpenOutputs(const Args& args, Outputs* out) {
+  out->masks = ReadMasks(args.dataset);
   if (!args.status.empty()) {
-    status.open(args.status);
-    status << dslam::StatusCsvHeader() << "\n";
+    out->status.open(args.status);
+    out->status << dslam::StatusCsvHeader() << "\n";
   }
-  if (!args.segmentation.empty() && !masks.empty()) {
-    segmentation.open(args.segmentation);
-    segmentation << "frame,true_dynamic,false_dynamic,missed_dynamic,true_static,"
-                    "candidates_on_dynamic,candidates_on_static\n";
+  if (!args.segmentation.empty() && !out->masks.empty()) {
+    out->segmentation.open(args.segmentation);
+    out->segmentation << "frame,true_dynamic,false_dynamic,missed_dynamic,true_static,"
+                         "candidates_on_dynamic,candidates_on_static\n";
   }
+}
+
+// Adds one frame's result to the trajectory, summary, CSVs and segmentation score.
+void Record(const Args& args, const dslam::FrameResult& r, Outputs* out) {
+  out->summary.Add(r);
+  if (r.has_pose) out->trajectory.push_back({r.stamp_s, r.T_world_camera});
+  if (out->status) out->status << dslam::StatusCsvRow(r) << "\n";
+  const auto mask = out->masks.find(r.stamp_s);
+  if (mask == out->masks.end()) return;
+  dslam::SegmentationScore frame_score;
+  frame_score.Add(r.points, cv::imread(args.dataset + "/" + mask->second, cv::IMREAD_ANYDEPTH));
+  out->score.Merge(frame_score);
+  if (out->segmentation) WriteSegmentationRow(r.frame_index, frame_score, &out->segmentation);
+}
+
+// Hands every frame to `slam` (frame i no earlier than start + i / rate_hz with --rate; a late
+// frame is not dropped) and records it; then waits for the back end and records the runs no
+// frame reported.
+void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam* slam,
+                Outputs* out) {
   const size_t n =
       args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
+  const auto start = std::chrono::steady_clock::now();
   for (size_t i = 0; i < n; ++i) {
-    const dslam::FrameResult r = slam.ProcessFrame(dataset.LoadFrame(i));
-    summary.Add(r);
-    if (r.has_pose) trajectory.push_back({r.stamp_s, r.T_world_camera});
-    if (status) status << dslam::StatusCsvRow(r) << "\n";
-    const auto mask = masks.find(r.stamp_s);
-    if (mask != masks.end()) {
-      dslam::SegmentationScore frame_score;
-      frame_score.Add(r.points, cv::imread(args.dataset + "/" + mask->second, cv::IMREAD_ANYDEPTH));
-      score.Merge(frame_score);
-      if (segmentation) WriteSegmentationRow(r.frame_index, frame_score, &segmentation);
+    const dslam::RgbdFrame frame = dataset.LoadFrame(i);
+    if (args.rate_hz > 0.0) {
+      std::this_thread::sleep_until(start +
+                                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                        std::chrono::duration<double>(i / args.rate_hz)));
     }
+    const dslam::FrameResult r = slam->ProcessFrame(frame);
+    Record(args, r, out);
     if (!args.quiet) Progress(i + 1, n, r);
   }
+  slam->WaitForBackEnd();
+  for (const dslam::BackEndStatus& run : slam->TakeUnreportedRuns()) out->summary.AddBackEnd(run);
   if (!args.quiet && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
-  dslam::WriteTumTrajectory(args.trajectory, trajectory);
-  if (!args.refined_trajectory.empty()) {
-    dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
-  }
+}
+
+// The stage table, the segmentation score (synthetic folders) and the summary line.
+void PrintReport(const Args& args, const dslam::Config& config, const Outputs& out) {
+  const dslam::RunSummary& summary = out.summary;
+  const dslam::SegmentationScore& score = out.score;
   summary.PrintStages(std::cout);
-  if (!masks.empty()) {
+  if (!out.masks.empty()) {
     std::printf(
         "segmentation: dynamic precision %.3f recall %.3f, static wrongly dynamic %.4f "
         "(tp %ld fp %ld fn %ld tn %ld; not yet judged: %ld on objects, %ld static)\n",
@@ -203,16 +243,39 @@ int Run(const Args& args) {
         score.false_dynamic(), score.missed_dynamic(), score.true_static(),
         score.candidates_on_dynamic(), score.candidates_on_static());
   }
-  if (!args.summary.empty()) {
-    dslam::WriteJsonFile(args.summary, SummaryJson(summary, score, !masks.empty(), config));
+  std::string backend = config.backend.enabled ? "on" : "off";
+  if (config.backend.enabled && args.threads) {
+    backend += " (thread, max backlog " + std::to_string(summary.max_backlog()) + ")";
   }
   std::printf(
       "summary: %d frames, %d with pose (%.1f%%), %d lost, static points %s, back end %s, "
-      "median %.1f ms/frame (front end %.1f) -> %s\n",
+      "median %.1f ms/frame (front end %.1f, tracking thread %.1f) -> %s\n",
       summary.frames(), summary.frames_with_pose(),
       100.0 * summary.frames_with_pose() / std::max(1, summary.frames()), summary.lost_frames(),
-      config.static_points.enabled ? "on" : "off", config.backend.enabled ? "on" : "off",
-      summary.MedianFrameMs(), summary.MedianMs("total"), args.trajectory.c_str());
+      config.static_points.enabled ? "on" : "off", backend.c_str(), summary.MedianFrameMs(),
+      summary.MedianMs("total"), summary.TrackingQuantile(0.5), args.trajectory.c_str());
+}
+
+int Run(const Args& args) {
+  dslam::Config config;
+  if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
+  if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
+  if (!args.backend.empty()) config.backend.enabled = args.backend == "on";
+  const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
+  dslam::Slam slam(config,
+                   args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous);
+  Outputs out;
+  OpenOutputs(args, &out);
+  FeedFrames(args, dataset, &slam, &out);
+  dslam::WriteTumTrajectory(args.trajectory, out.trajectory);
+  if (!args.refined_trajectory.empty()) {
+    dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
+  }
+  PrintReport(args, config, out);
+  if (!args.summary.empty()) {
+    dslam::WriteJsonFile(args.summary,
+                         SummaryJson(out.summary, out.score, !out.masks.empty(), config, args));
+  }
   return 0;
 }
 
@@ -220,7 +283,12 @@ int Run(const Args& args) {
 
 int main(int argc, char** argv) {
   Args args;
-  if (!Parse(argc, argv, &args)) return Usage();
+  bool parsed = false;
+  try {
+    parsed = Parse(argc, argv, &args);
+  } catch (const std::exception&) {  // a number that does not parse (std::stoi, std::stod)
+  }
+  if (!parsed) return Usage();
   try {
     return Run(args);
   } catch (const std::exception& e) {

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """rostest: plays a freshly generated synthetic bag into the dslam nodelet and checks that
 odometry, TF, both clouds, graph markers and status arrive, and that the saved trajectory matches
-the ground truth within a tolerance after SE(3) alignment (dslam_eval's ATE)."""
+the ground truth within a tolerance after SE(3) alignment (dslam_eval's ATE). With the private
+parameter ~expect_backend (odometry_bag_backend.test: the back end on, on its own thread), the
+status messages must also report back-end runs delivered by later frames."""
 
 import os
 import subprocess
@@ -33,12 +35,15 @@ class Recorder:
         self.lock = threading.Lock()
         self.counts = {}
         self.last = {}
+        self.statuses = []
 
     def callback(self, name):
         def store(msg):
             with self.lock:
                 self.counts[name] = self.counts.get(name, 0) + 1
                 self.last[name] = msg
+                if name == "status":
+                    self.statuses.append(msg)
         return store
 
 
@@ -79,6 +84,20 @@ class OdometryBagTest(unittest.TestCase):
         ate_m = traj.evaluate(os.path.join(folder, "groundtruth.txt"), out)["metrics"]["ate_rmse_m"]
         rospy.loginfo("odometry_bag_check: %d poses, ATE %.4f m", result.poses, ate_m)
         self.assertLess(ate_m, ATE_TOLERANCE_M)
+        self.assertTrue(all(s.tracking_ms > 0.0 for s in rec.statuses))
+        if rospy.get_param("~expect_backend", False):
+            self.check_backend(rec.statuses)
+
+    def check_backend(self, statuses):
+        """The back end on its own thread: local BA ran (reported by a later frame, flagged),
+        and every keyframe queued itself (backlog >= 1 after it)."""
+        delivered = [s for s in statuses if s.backend_delivered]
+        rospy.loginfo("odometry_bag_check: back end: %d runs reported, max backlog %d",
+                      sum(s.backend_ran for s in delivered),
+                      max(s.backend_backlog for s in statuses))
+        self.assertTrue(any(s.backend_ran for s in delivered), "no back-end run reported")
+        self.assertFalse(any(s.backend_ran and not s.backend_delivered for s in statuses))
+        self.assertTrue(all(s.backend_backlog >= 1 for s in statuses if s.keyframe))
 
 
 if __name__ == "__main__":

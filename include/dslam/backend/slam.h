@@ -1,8 +1,35 @@
 #pragma once
-// The whole pipeline of the paper, synchronous: the front end (Odometry: ORB tracking against the
-// local map with front-end static point determination) on every frame and, after each new
-// keyframe, the back end (local bundle adjustment over the keyframe window) on the same map
-// before the next frame is read. Deterministic: the reference for offline runs.
+// The whole pipeline of the paper: the front end (Odometry: ORB tracking against the local map
+// with front-end static point determination) on every frame and, after each new keyframe, the
+// back end (local mapping: local bundle adjustment over the keyframe window) on the same map.
+//
+// Two execution modes (BackEndMode). Synchronous (the default, deterministic: the reference for
+// offline runs): local mapping runs inside ProcessFrame, before the next frame is read.
+// Threaded (the ROS node's default): local mapping runs on Slam's own back-end thread beside
+// the caller's (tracking) thread.
+//
+// Locking policy (threaded mode; synchronous mode takes the same lock, uncontended). One mutex,
+// the map mutex, guards all mutable state of Slam: the Odometry (its map, motion model and frame
+// bookkeeping), the RefinedTrajectory and the back-end queue (pending keyframes, completed runs,
+// the hold and stop flags, a stored back-end error). While a thread holds it, no local-mapping run
+// is in progress on another thread.
+// - The tracking thread (the caller of ProcessFrame) holds it for Odometry::ProcessFrame and the
+//   bookkeeping after it (refined trajectory, queueing the keyframe, handing over a completed
+//   run), then releases it before returning.
+// - The back-end thread holds it for the whole of one RunLocalMapping (which changes the map's
+//   keyframe poses and points, the motion model through AdoptNewestKeyFramePose, and the refined
+//   trajectory) and sleeps on a condition variable of the same mutex in between.
+// - Every other public member (Reset, WaitForBackEnd, TakeUnreportedRuns, HoldBackEnd,
+//   RefinedPoses, MapSnapshot) takes it; getters return copies, never references into the map.
+//   config() is immutable.
+// Nothing else is shared between the threads; no other lock is taken while it is held.
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "dslam/backend/local_bundle_adjustment.h"
 #include "dslam/backend/refined_trajectory.h"
@@ -13,33 +40,86 @@
 
 namespace dslam {
 
-/// Front end and back end over one map. Not thread-safe: call from one thread.
+/// Where Slam runs local mapping after a keyframe.
+enum class BackEndMode {
+  kSynchronous,  ///< inside ProcessFrame, after the front end (deterministic)
+  kThreaded,     ///< on Slam's back-end thread, beside the caller's tracking thread
+};
+
+/// Front end and back end over one map. ProcessFrame, Reset, WaitForBackEnd and
+/// TakeUnreportedRuns are for one (tracking) thread; the getters may be called from any thread
+/// (locking policy above).
 class Slam {
  public:
-  /// Throws ConfigError when `config` is invalid.
-  explicit Slam(const Config& config);
+  /// Starts the back-end thread in BackEndMode::kThreaded. Throws ConfigError when `config` is
+  /// invalid.
+  explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous);
+  /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued.
+  ~Slam();
+  Slam(const Slam&) = delete;
+  Slam& operator=(const Slam&) = delete;
 
   /// Tracks one frame (Odometry::ProcessFrame) and, when it became a keyframe and
-  /// backend.enabled, runs local mapping; FrameResult::backend reports what it did. The pose in
-  /// the result is the one estimated at this frame (causal), before the back end refines the map.
-  /// Throws std::invalid_argument when frame.Check() fails.
+  /// backend.enabled, runs local mapping (synchronous) or queues it for the back-end thread
+  /// (threaded). FrameResult::backend is, synchronous: this keyframe's run; threaded: the oldest
+  /// completed run not yet reported, flagged by FrameResult::backend_thread.delivered (each run is
+  /// reported once; TakeUnreportedRuns returns the rest). The pose in the result is the one
+  /// estimated at this frame (causal). Sets times.tracking_ms. Throws std::invalid_argument when
+  /// frame.Check() fails, and rethrows an exception of the back-end thread's last run.
   FrameResult ProcessFrame(const RgbdFrame& frame);
 
-  /// Forgets the map and the motion model; the next frame initialises at the world origin.
-  void Reset() { odometry_.Reset(); }
+  /// Waits for a back-end run in progress, drops queued keyframes and unreported runs, then
+  /// forgets the map and the motion model; the next frame initialises at the world origin.
+  void Reset();
 
-  const Map& map() const { return odometry_.map(); }  ///< the shared map (for visualisation)
+  /// Threaded: blocks until no keyframe is queued and no run is in progress (releases a hold
+  /// first). Synchronous: returns at once. Rethrows an exception of the back-end thread.
+  void WaitForBackEnd();
+
+  /// The completed runs no FrameResult has reported, oldest first; they count as reported (the
+  /// end of a threaded run: WaitForBackEnd, then this). Always empty when synchronous.
+  std::vector<BackEndStatus> TakeUnreportedRuns();
+
+  /// Threaded: while held, keyframes queue (the backlog grows) and no run starts; releasing
+  /// starts one run for the newest (as when the thread is busy). Lets a caller step through a
+  /// sequence with the map unchanged by the back end, and tests see the queue. No effect when
+  /// synchronous.
+  void HoldBackEnd(bool hold);
 
   /// Every tracked frame re-expressed on its reference keyframe as refined by the back end so
-  /// far (RefinedTrajectory); the same poses as the causal ones with the back end off.
-  Trajectory RefinedPoses() const { return refined_.Poses(); }
-  const Config& config() const { return odometry_.config(); }
+  /// far (RefinedTrajectory, a copy); the same poses as the causal ones with the back end off.
+  Trajectory RefinedPoses() const;
+
+  /// A copy of the map (keyframe window and points) between two runs of either thread.
+  Map MapSnapshot() const;
+
+  const Config& config() const { return odometry_.config(); }  ///< immutable
+  BackEndMode mode() const { return mode_; }                   ///< as constructed
 
  private:
-  BackEndStatus RunLocalMapping();
+  using Lock = std::unique_lock<std::mutex>;
 
+  /// Local BA on the window the newest keyframe completes; the map mutex is held.
+  BackEndStatus RunLocalMapping();
+  /// The back-end thread: waits for queued keyframes, runs local mapping once for all of them.
+  void BackEndLoop();
+  /// Threaded bookkeeping after the front end (queue a keyframe, hand over a run); lock held.
+  void ExchangeWithBackEnd(FrameResult* result);
+  void RethrowBackEndError();                         ///< lock held
+  const Map& map() const { return odometry_.map(); }  ///< lock held
+
+  const BackEndMode mode_;
+  mutable std::mutex map_mutex_;  ///< the one lock: guards every member below (policy above)
   Odometry odometry_;
   RefinedTrajectory refined_;
+  std::condition_variable work_;  ///< back-end thread: keyframes queued, hold released or stop
+  std::condition_variable idle_;  ///< WaitForBackEnd: a run finished
+  int pending_ = 0;               ///< [keyframes] queued and not started (the backlog)
+  bool held_ = false;             ///< HoldBackEnd(true)
+  bool stop_ = false;             ///< the destructor asked the thread to end
+  std::deque<BackEndStatus> completed_;  ///< runs not yet reported, oldest first
+  std::exception_ptr error_;             ///< the last run's exception, until rethrown
+  std::thread back_end_;                 ///< started last, threaded mode only
 };
 
 }  // namespace dslam

@@ -27,6 +27,10 @@ class RunSummary {
   /// Adds one frame.
   void Add(const FrameResult& result);
 
+  /// Adds a back-end run that no FrameResult reported (threaded mode: Slam::TakeUnreportedRuns
+  /// at the end of a run).
+  void AddBackEnd(const BackEndStatus& status);
+
   int frames() const { return frames_; }               ///< frames processed
   int frames_with_pose() const { return with_pose_; }  ///< frames with a reported pose
   int lost_frames() const { return lost_; }            ///< frames in state kLost
@@ -42,8 +46,17 @@ class RunSummary {
   double MedianGraphPoints() const;
 
   /// Median [ms] of the whole frame over tracked frames: the front end plus, after keyframes,
-  /// the back end (what a synchronous run spends per frame).
+  /// the back end (what a synchronous run spends per frame); with the back end on its own
+  /// thread (BackEndThreadStatus::threaded), the front end only.
   double MedianFrameMs() const { return Median(frame_ms_); }
+
+  /// The `fraction`-quantile [ms] of StageTimes::tracking_ms (the tracking thread's own time:
+  /// lock wait, front end, bookkeeping) over tracked frames.
+  double TrackingQuantile(double fraction) const { return Quantile(tracking_ms_, fraction); }
+
+  /// [keyframes] The largest back-end backlog any frame reported (BackEndThreadStatus::backlog;
+  /// 0 in synchronous mode).
+  int max_backlog() const { return max_backlog_; }
 
   /// Keyframes after which the back end ran (local BA or back-end static point determination).
   int backend_runs() const { return static_cast<int>(backend_.size()); }
@@ -61,7 +74,8 @@ class RunSummary {
  private:
   int frames_ = 0, with_pose_ = 0, lost_ = 0;
   std::vector<StageTimes> times_;
-  std::vector<double> frame_ms_;
+  std::vector<double> frame_ms_, tracking_ms_;
+  int max_backlog_ = 0;
   std::vector<BackEndStatus> backend_;
   std::vector<double> graph_points_;
   long labelled_static_ = 0, labelled_dynamic_ = 0;

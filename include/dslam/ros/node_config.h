@@ -22,6 +22,7 @@ struct NodeConfig {
   std::string camera_yaml = "";
   int path_max_poses = 10000;
   double tf_wait_s = 0.0;
+  bool backend_threads = true;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -39,6 +40,10 @@ struct NodeConfig {
       s.path_max_poses);
     v(Field("tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at the first frame"),
       s.tf_wait_s);
+    v(Flag("backend_threads",
+           "back end (backend.enabled) on its own thread beside tracking; false: after each "
+           "keyframe on the worker thread"),
+      s.backend_threads);
   }
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 // dslam/OdometryNodelet: synchronizes colour, depth and camera_info (relative, remappable names
-// rgb/image, depth/image, rgb/camera_info), runs dslam::Slam (front end and back end) on a worker
-// thread fed by a two-frame bounded queue (it absorbs the bursts of the ApproximateTime
-// synchronizer), and publishes through FramePublisher. Services: `reset` (std_srvs/Trigger),
-// `save_trajectory` (dslam/SaveTrajectory).
+// rgb/image, depth/image, rgb/camera_info), runs dslam::Slam on a worker thread fed by a
+// two-frame bounded queue (it absorbs the bursts of the ApproximateTime synchronizer): the front
+// end there, the back end on Slam's own thread (~backend_threads, the default) or after each
+// keyframe on the worker; and publishes through FramePublisher. Services: `reset`
+// (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
 
 #include <atomic>
 #include <memory>
@@ -70,7 +71,9 @@ class OdometryNodelet : public nodelet::Nodelet {
   bool OnSaveTrajectory(dslam::SaveTrajectory::Request& req, dslam::SaveTrajectory::Response& res);
 
   NodeConfig config_;
-  std::unique_ptr<Slam> slam_;  // front end and back end; used by the worker thread only
+  // Front end and back end; used by the worker thread only (in threaded mode Slam also runs its
+  // own back-end thread, stopped and joined when slam_ is destroyed, after worker_).
+  std::unique_ptr<Slam> slam_;
   std::unique_ptr<FramePublisher> publisher_;  // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;

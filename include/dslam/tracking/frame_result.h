@@ -55,6 +55,16 @@ struct FrameCounts {
   int new_points = 0;           ///< map points created (keyframes only)
 };
 
+/// How FrameResult::backend relates to the frame when Slam runs the back end on its own thread
+/// (see dslam/backend/slam.h); all false / zero in synchronous mode, where `backend` is the run
+/// after this frame's own keyframe.
+struct BackEndThreadStatus {
+  bool threaded = false;  ///< the back end runs on its own thread (BackEndMode::kThreaded)
+  /// `backend` is a run that completed before this frame and no earlier FrameResult reported.
+  bool delivered = false;
+  int backlog = 0;  ///< [keyframes] queued for the back end and not yet started, after this frame
+};
+
 /// Wall-clock time of each stage [ms].
 struct StageTimes {
   double features_ms = 0.0;       ///< ORB extraction and depth measurements
@@ -64,6 +74,9 @@ struct StageTimes {
   double refine_ms = 0.0;         ///< more matches and pose refinement with static points
   double mapping_ms = 0.0;        ///< keyframe, new points, culling
   double total_ms = 0.0;          ///< the whole ProcessFrame call
+  /// The calling (tracking) thread's time in Slam::ProcessFrame: waiting for the map lock, the
+  /// front end and its bookkeeping, never the back end's local mapping (0 from Odometry alone).
+  double tracking_ms = 0.0;
 };
 
 /// What the back end did after a keyframe (see dslam/backend/slam.h); all zero otherwise.
@@ -108,6 +121,8 @@ struct FrameResult {
   BackEndStatus backend;              ///< filled by Slam after keyframes
   std::vector<ObservedPoint> points;  ///< matched map points with their labels
   std::vector<GraphEdgeView> edges;   ///< front-end graph (kept and culled edges)
+  /// Threaded mode: which back-end run `backend` is, and the back end's backlog.
+  BackEndThreadStatus backend_thread;
 };
 
 }  // namespace dslam

@@ -1,0 +1,105 @@
+"""Tests of dslam_run_dataset's command line: the back end's execution mode (--threads), the
+fixed feeding rate (--rate) and what the summary JSON and status CSV report about them, on a
+short synthetic sequence rendered by dslam_synth."""
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import time
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FRAMES = 30
+
+
+def find_tool(name):
+    """A built dslam executable: in devel/lib/dslam of a folder on LD_LIBRARY_PATH (catkin sets
+    it when it runs the tests) or of build/ws beside the repository."""
+    libs = os.environ.get("LD_LIBRARY_PATH", "").split(":")
+    libs.append(os.path.join(HERE, "..", "..", "build", "ws", "devel", "lib"))
+    for folder in libs:
+        path = os.path.join(folder, "dslam", name)
+        if folder and os.access(path, os.X_OK):
+            return path
+    raise RuntimeError("%s not found (build the workspace first)" % name)
+
+
+class RunDatasetCliTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="dslam_run_dataset_")
+        cls.sequence = os.path.join(cls.tmp, "static_room")
+        subprocess.run([find_tool("dslam_synth"), "--scenario", "static_room", "--frames",
+                        str(FRAMES), "--seed", "1", "--output", cls.sequence], check=True,
+                       stdout=subprocess.DEVNULL)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp)
+
+    def run_tool(self, name, *options):
+        """Runs dslam_run_dataset with the back end on; returns (exit code, summary, status
+        rows, wall time [s])."""
+        out = os.path.join(self.tmp, name)
+        start = time.monotonic()
+        code = subprocess.run(
+            [find_tool("dslam_run_dataset"), "--dataset", self.sequence, "--trajectory",
+             out + ".txt", "--summary", out + ".json", "--status", out + ".csv",
+             "--refined-trajectory", out + "_refined.txt", "--backend", "on", "--quiet"] +
+            list(options), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode
+        wall_s = time.monotonic() - start
+        if code != 0:
+            return code, None, None, wall_s
+        with open(out + ".json") as handle:
+            summary = json.load(handle)
+        with open(out + ".csv") as handle:
+            rows = list(csv.DictReader(handle))
+        return code, summary, rows, wall_s
+
+    def test_synchronous_by_default(self):
+        code, summary, rows, _ = self.run_tool("sync")
+        self.assertEqual(code, 0)
+        self.assertFalse(summary["threads"])
+        self.assertEqual(summary["rate_hz"], 0)
+        self.assertEqual(summary["max_backlog"], 0)
+        self.assertEqual(summary["frames_with_pose"], FRAMES)
+        self.assertGreater(summary["median_tracking_ms"], 0)
+        self.assertGreaterEqual(summary["p95_tracking_ms"], summary["median_tracking_ms"])
+        self.assertTrue(all(row["backlog"] == "0" and row["backend_delivered"] == "0"
+                            for row in rows))
+
+    def test_threads_at_a_fixed_rate(self):
+        rate_hz = 20.0
+        code, summary, rows, wall_s = self.run_tool("threads", "--threads", "--rate", "20")
+        self.assertEqual(code, 0)
+        self.assertTrue(summary["threads"])
+        self.assertEqual(summary["rate_hz"], rate_hz)
+        self.assertEqual(summary["frames_with_pose"], FRAMES)
+        # The last frame is handed over no earlier than (FRAMES - 1) / rate after the first.
+        self.assertGreaterEqual(wall_s, (FRAMES - 1) / rate_hz)
+        keyframes = [row for row in rows if row["keyframe"] == "1"]
+        self.assertGreater(len(keyframes), 1)
+        # A keyframe queues itself: the backlog after it is at least one.
+        self.assertTrue(all(int(row["backlog"]) >= 1 for row in keyframes))
+        self.assertEqual(summary["max_backlog"], max(int(row["backlog"]) for row in rows))
+        self.assertGreater(summary["median_tracking_ms"], 0)
+        # Runs are reported by a later frame, flagged; the summary counts each once: those the
+        # frames reported (local BA ran: points > 0) and at most one completed after the last.
+        delivered = [row for row in rows if row["backend_delivered"] == "1"]
+        self.assertGreater(len(delivered), 0)
+        self.assertLessEqual(len(delivered), len(keyframes))
+        ran = sum(int(row["ba_points"]) > 0 for row in delivered)
+        self.assertGreaterEqual(summary["backend_runs"], ran)
+        self.assertLessEqual(summary["backend_runs"], ran + 1)
+
+    def test_bad_rate_is_a_usage_error(self):
+        for value in ["0", "-5", "fast"]:
+            code, _, _, _ = self.run_tool("bad", "--rate", value)
+            self.assertEqual(code, 2, value)
+
+
+if __name__ == "__main__":
+    unittest.main()
