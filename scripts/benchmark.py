@@ -78,17 +78,27 @@ def fmt(value, digits=4):
 HEADER = ("| sequence | ATE [m] | ATE back end on [m] | ATE static points off [m] | "
           "RPE [m/s] | RPE [deg/s] | RPE [deg/s] back end on | tracked | tracked back end on | "
           "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | "
-          "frame [ms] | frame back end on [ms] | BA [ms] median / p95 | BA keyframes / points |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "back end on: dyn. precision / recall / static wrongly dyn. | "
+          "frame [ms] | frame back end on [ms] | BA [ms] median / p95 | BA keyframes / points | "
+          "window SPD [ms] median / p95 | window SPD points / unmarked |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+
+
+def segmentation(result, moving):
+    """precision | recall | static wrongly dynamic, '-' where the scene has no truth or movers."""
+    if moving:
+        return (f"{result['dynamic_precision']:.3f} | {result['dynamic_recall']:.3f} | "
+                f"{result['false_dynamic_rate']:.4f}")
+    if "false_dynamic_rate" in result:
+        return f"- | - | {result['false_dynamic_rate']:.4f}"
+    return "- | - | -"
 
 
 def row(name, results):
     on, backend, no_static = (results[v] for v in ("dslam", "backend_on", "static_off"))
     moving = on.get("true_dynamic", 0) + on.get("missed_dynamic", 0) > 0  # a scene with movers
-    seg = (f"{on['dynamic_precision']:.3f} | {on['dynamic_recall']:.3f} | "
-           f"{on['false_dynamic_rate']:.4f}") if moving else (
-        f"- | - | {on['false_dynamic_rate']:.4f}" if "false_dynamic_rate" in on else "- | - | -")
-    seg += f" | {on['labelled_dynamic_share']:.4f}"
+    seg = segmentation(on, moving) + f" | {on['labelled_dynamic_share']:.4f}"
+    seg += " | " + segmentation(backend, moving).replace(" | ", " / ")
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
     tracked_backend = backend["frames_with_pose"] / max(backend["frames"], 1)
     return (f"| {name} | {on['ate_rmse_m']:.4f} | {backend['ate_rmse_m']:.4f} | "
@@ -98,7 +108,9 @@ def row(name, results):
             f"{tracked_backend:.3f} | {seg} | {on['median_frame_ms']:.1f} | "
             f"{backend['median_frame_ms']:.1f} | "
             f"{backend['median_ba_ms']:.1f} / {backend['p95_ba_ms']:.1f} | "
-            f"{backend['median_ba_keyframes']:.0f} / {backend['median_ba_points']:.0f} |")
+            f"{backend['median_ba_keyframes']:.0f} / {backend['median_ba_points']:.0f} | "
+            f"{backend['median_spd_ms']:.1f} / {backend['p95_spd_ms']:.1f} | "
+            f"{backend['median_spd_points']:.0f} / {backend['median_spd_unmarked']:.0f} |")
 
 
 def mean_of(results):
