@@ -1,13 +1,14 @@
 #pragma once
-// Config section `backend`: local mapping after each keyframe (local bundle adjustment over the
-// keyframe window). A member of the one Config tree (config.h).
+// Config section `backend`: local mapping after each keyframe (static point determination and
+// local bundle adjustment over the keyframe window). A member of the one Config tree (config.h).
 
 #include "dslam/core/config_field.h"
 
 namespace dslam {
 
-/// Local mapping (paper Sec. V, back end): bundle adjustment of the window's keyframes and the
-/// verified static points they measure. Units, ranges and meanings of the fields are given in
+/// Local mapping (paper Sec. V, back end): static point determination over the keyframe window
+/// (Algorithm 1), then bundle adjustment of the window's keyframes and the verified static points
+/// they measure. Units, ranges and meanings of the fields are given in
 /// Fields() (printed by `dslam_config_doc`).
 struct BackendConfig {
   bool enabled = false;
@@ -28,9 +29,9 @@ struct BackendConfig {
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    // Off by default until it beats the front end alone on every benchmark sequence: on the
-    // dynamic scenarios, marked points that move slowly (slow_box) or pause (walking) still pull
-    // the window (BENCHMARKS.md, "Back end: local bundle adjustment").
+    // Off by default until it beats the front end alone on every benchmark sequence: with static
+    // point determination over the window it helps walking_static, walking_halfsphere and Bonn
+    // but not walking, close_person or slow_box (BENCHMARKS.md, "Back end, part 2").
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
     // Algorithm 1 (window_static_points.h) runs before local BA, which then uses the points that
     // stayed marked. Needs static_points.enabled.
