@@ -64,7 +64,8 @@ void RunSummary::Add(const FrameResult& result) {
     graph_points_.push_back(result.counts.graph_points);
     // A run reported late (threaded) did not cost this frame.
     const bool own_run = !result.backend_thread.delivered;
-    frame_ms_.push_back(result.times.total_ms + (own_run ? result.backend.ba_ms + result.backend.spd_ms : 0.0));
+    frame_ms_.push_back(result.times.total_ms +
+                        (own_run ? result.backend.ba_ms + result.backend.spd_ms : 0.0));
     tracking_ms_.push_back(result.times.tracking_ms);
   }
   max_backlog_ = std::max(max_backlog_, result.backend_thread.backlog);

@@ -97,8 +97,8 @@ TEST(WindowStaticPoints, StaticSceneKeepsItsMarks) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     Scene scene = MakeScene(12, 0.0, seed);
     ASSERT_TRUE(DetermineStaticPointsInWindow(config, &scene.map).ran);
-    unmarked += 240 - CountMarked(scene.map, scene.static_ids) -
-                CountMarked(scene.map, scene.moving_ids);
+    unmarked +=
+        240 - CountMarked(scene.map, scene.static_ids) - CountMarked(scene.map, scene.moving_ids);
   }
   EXPECT_LE(unmarked, 7);  // 1% of 720: the test's false alarms at probability 0.99
 }

@@ -35,8 +35,7 @@ struct BackendConfig {
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
     // Algorithm 1 (window_static_points.h) runs before local BA, which then uses the points that
     // stayed marked. Needs static_points.enabled.
-    v(Flag("spd_enabled", "back-end static point determination over the window"),
-      s.spd_enabled);
+    v(Flag("spd_enabled", "back-end static point determination over the window"), s.spd_enabled);
     v(Field("spd_min_covisible_points", "-", 1, 100000,
             "window keyframes sharing fewer measured points with the new keyframe are left out"),
       s.spd_min_covisible_points);

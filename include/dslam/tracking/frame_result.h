@@ -91,16 +91,16 @@ struct BackEndStatus {
   bool ba_rejected = false;  ///< the solution moved a keyframe too far and was not applied
   double ba_ms = 0.0;        ///< [ms] local BA wall time
   // Back-end static point determination (window_static_points.h), before local BA.
-  bool spd_ran = false;           ///< it ran after this frame
-  int spd_keyframes = 0;          ///< covisible keyframes whose measurements it used
-  int spd_points = 0;             ///< marked points it checked
-  int spd_edges = 0;              ///< graph edges
-  int spd_culled_edges = 0;       ///< edges found inconsistent
-  int spd_unmarked = 0;           ///< points that lost their mark
-  double spd_graph_ms = 0.0;      ///< [ms] Delaunay graph
-  double spd_culling_ms = 0.0;    ///< [ms] edge tests
-  double spd_components_ms = 0.0; ///< [ms] components and labels
-  double spd_ms = 0.0;            ///< [ms] its whole wall time
+  bool spd_ran = false;            ///< it ran after this frame
+  int spd_keyframes = 0;           ///< covisible keyframes whose measurements it used
+  int spd_points = 0;              ///< marked points it checked
+  int spd_edges = 0;               ///< graph edges
+  int spd_culled_edges = 0;        ///< edges found inconsistent
+  int spd_unmarked = 0;            ///< points that lost their mark
+  double spd_graph_ms = 0.0;       ///< [ms] Delaunay graph
+  double spd_culling_ms = 0.0;     ///< [ms] edge tests
+  double spd_components_ms = 0.0;  ///< [ms] components and labels
+  double spd_ms = 0.0;             ///< [ms] its whole wall time
 };
 
 /// Everything the odometry reports about one frame.
