@@ -89,14 +89,12 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
   if (map->keyframes().size() < 2) return stats;
   const std::vector<int> keyframes =
       CovisibleKeyFrames(*map, config.backend.spd_min_covisible_points);
+  if (keyframes.size() < 2) return stats;
   std::vector<PointId> ids;
   const double rotation_sigma = config.backend.spd_rotation_sigma_deg * M_PI / 180.0;
   const CorrelationInput input =
       CollectProblem(*map, keyframes, rotation_sigma * rotation_sigma, &ids);
-  if (keyframes.size() < 2 ||
-      static_cast<int>(ids.size()) < config.static_points.min_graph_points) {
-    return stats;
-  }
+  if (static_cast<int>(ids.size()) < config.static_points.min_graph_points) return stats;
   const StaticPointsResult result = DetermineStaticPoints(input, config.static_points);
   if (result.static_component >= 0) {
     for (size_t i = 0; i < ids.size(); ++i) {
