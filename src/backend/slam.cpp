@@ -7,18 +7,22 @@
 
 namespace dslam {
 
-Slam::Slam(const Config& config, BackEndMode mode) : mode_(mode), odometry_(config) {
+Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined)
+    : mode_(mode), refined_recording_(refined), odometry_(config) {
   if (mode_ == BackEndMode::kThreaded) back_end_ = std::thread(&Slam::BackEndLoop, this);
 }
 
-FrameResult Slam::ProcessFrame(const RgbdFrame& frame) {
+FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
   const Stopwatch tracking;  // this thread's time: waiting for the lock, front end, bookkeeping
   const Lock lock(map_mutex_);
   RethrowBackEndError();
   // Front end (Sec. V-A, V-B): features, local-map matching, pose from static points, front-end
   // static point determination, map management and keyframes.
-  FrameResult result = odometry_.ProcessFrame(frame);
-  if (result.has_pose) refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
+  FrameResult result = odometry_.ProcessFrame(frame, request);
+  if (result.reset) DropBackEndWork();  // the old world's keyframes and runs
+  if (result.has_pose && refined_recording_ == RefinedPoseRecording::kOn) {
+    refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
+  }
   if (mode_ == BackEndMode::kThreaded) ExchangeWithBackEnd(&result);
   result.times.tracking_ms = tracking.ElapsedMs();
   // Back end (Sec. V): local mapping on the window the new keyframe completes.
@@ -49,7 +53,7 @@ BackEndStatus Slam::RunLocalMapping() {
   // Tracking goes on from the refined pose of the keyframe just made (this frame).
   if (ba.ran && !ba.rejected) {
     odometry_.AdoptNewestKeyFramePose();
-    refined_.UpdateKeyFrames(map());
+    if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
   }
   status.ran = ba.ran;
   status.window_keyframes = static_cast<int>(map().keyframes().size());
@@ -109,11 +113,15 @@ void Slam::RethrowBackEndError() {
   std::rethrow_exception(error);
 }
 
-void Slam::Reset() {
+void Slam::Reset(ResetMode mode) {
   const Lock lock(map_mutex_);  // waits for a run in progress
+  DropBackEndWork();
+  odometry_.Reset(mode);
+}
+
+void Slam::DropBackEndWork() {
   pending_ = 0;
   completed_.clear();
-  odometry_.Reset();
 }
 
 void Slam::WaitForBackEnd() {

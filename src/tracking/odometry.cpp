@@ -9,19 +9,25 @@ namespace dslam {
 
 Odometry::Odometry(const Config& config) : config_(config) { config_.Validate(); }
 
-void Odometry::Reset() {
+void Odometry::Reset(ResetMode mode) {
   map_.Clear();
-  motion_.Reset();
+  if (mode == ResetMode::kNewWorld) {
+    motion_.Reset();
+    have_stamp_ = false;
+  } else {
+    motion_.ForgetVelocity();
+  }
   previous_ = FrameMeasurements();
   last_tracked_.clear();
-  initialised_ = have_stamp_ = false;
+  initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
 
 // The paper's front end (Sec. V), one frame.
-FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
+FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
   const std::string problem = frame.Check();
   if (!problem.empty()) throw std::invalid_argument("dslam: bad frame: " + problem);
+  request_ = request;
   Stopwatch total, stage;
   FrameResult result;
   result.reset = BeginFrame(frame, &result);
@@ -35,8 +41,11 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
   if (!initialised_) return Initialise(&current, std::move(result));
 
   // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
-  const Eigen::Isometry3d T_camera_world_predicted = motion_.Predict(frame.stamp_s).inverse();
-  MatchLocalMapPoints(&current, T_camera_world_predicted, lost_frames_ > 0);
+  const double max_gap_s = config_.tracking.max_prediction_gap_s;
+  const Eigen::Isometry3d T_camera_world_predicted =
+      motion_.Predict(frame.stamp_s, max_gap_s).inverse();
+  const bool gap = motion_.IsGap(frame.stamp_s, max_gap_s);
+  MatchLocalMapPoints(&current, T_camera_world_predicted, lost_frames_ > 0 || gap);
   result.times.matching_ms = stage.Restart();
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
@@ -76,7 +85,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
 bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
   bool reset = false;
   if (have_stamp_ && frame.stamp_s < last_stamp_s_) {
-    Reset();
+    Reset(ResetMode::kNewWorld);
     reset = true;
     result->message = "time went backwards: reset";
   }

@@ -135,7 +135,7 @@ TEST(SlamThreads, ResetDropsQueuedKeyFrames) {
   slam.HoldBackEnd(true);
   int next = 0;
   EXPECT_EQ(FeedKeyFrames(&slam, 3, &next).backend_thread.backlog, 3);
-  slam.Reset();
+  slam.Reset(ResetMode::kNewWorld);
   slam.WaitForBackEnd();
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());  // nothing ran: the queue was dropped
   const FrameResult first = slam.ProcessFrame(Sequence().frames[next]);
@@ -151,7 +151,7 @@ TEST(SlamThreads, ResetRightAfterKeyFramesNeverReportsOldRuns) {
   int next = 0;
   for (int round = 0; round < 3; ++round) {
     FeedKeyFrames(&slam, 2, &next);  // the back end may be running, queued or done
-    slam.Reset();
+    slam.Reset(ResetMode::kNewWorld);
     const FrameResult first = slam.ProcessFrame(Sequence().frames[next++]);
     EXPECT_EQ(first.state, TrackingState::kInitialised) << "round " << round;
     EXPECT_FALSE(first.backend_thread.delivered) << "round " << round;

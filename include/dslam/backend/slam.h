@@ -46,6 +46,13 @@ enum class BackEndMode {
   kThreaded,     ///< on Slam's back-end thread, beside the caller's tracking thread
 };
 
+/// Whether Slam keeps every tracked frame for RefinedPoses() (memory grows by one entry per
+/// tracked frame and one per keyframe: offline runs want it, a node running for hours does not).
+enum class RefinedPoseRecording {
+  kOn,   ///< RefinedPoses() returns every tracked frame
+  kOff,  ///< RefinedPoses() returns nothing; memory stays flat
+};
+
 /// Front end and back end over one map. ProcessFrame, Reset, WaitForBackEnd and
 /// TakeUnreportedRuns are for one (tracking) thread; the getters may be called from any thread
 /// (locking policy above).
@@ -53,7 +60,8 @@ class Slam {
  public:
   /// Starts the back-end thread in BackEndMode::kThreaded. Throws ConfigError when `config` is
   /// invalid.
-  explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous);
+  explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous,
+                RefinedPoseRecording refined = RefinedPoseRecording::kOn);
   /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued.
   ~Slam();
   Slam(const Slam&) = delete;
@@ -64,13 +72,17 @@ class Slam {
   /// (threaded). FrameResult::backend is, synchronous: this keyframe's run; threaded: the oldest
   /// completed run not yet reported, flagged by FrameResult::backend_thread.delivered (each run is
   /// reported once; TakeUnreportedRuns returns the rest). The pose in the result is the one
-  /// estimated at this frame (causal). Sets times.tracking_ms. Throws std::invalid_argument when
-  /// frame.Check() fails, and rethrows an exception of the back-end thread's last run.
-  FrameResult ProcessFrame(const RgbdFrame& frame);
+  /// estimated at this frame (causal). Sets times.tracking_ms. `request` chooses the per-frame
+  /// lists (FrameRequest). When time went backwards the odometry starts a new world
+  /// (FrameResult::reset) and queued keyframes and unreported runs of the old one are dropped.
+  /// Throws std::invalid_argument when frame.Check() fails, and rethrows an exception of the
+  /// back-end thread's last run.
+  FrameResult ProcessFrame(const RgbdFrame& frame, const FrameRequest& request = {});
 
   /// Waits for a back-end run in progress, drops queued keyframes and unreported runs, then
-  /// forgets the map and the motion model; the next frame initialises at the world origin.
-  void Reset();
+  /// resets the odometry (Odometry::Reset): the next frame initialises at the last tracked pose
+  /// (kKeepPose) or at the world origin (kNewWorld).
+  void Reset(ResetMode mode);
 
   /// Threaded: blocks until no keyframe is queued and no run is in progress (releases a hold
   /// first). Synchronous: returns at once. Rethrows an exception of the back-end thread.
@@ -105,10 +117,12 @@ class Slam {
   void BackEndLoop();
   /// Threaded bookkeeping after the front end (queue a keyframe, hand over a run); lock held.
   void ExchangeWithBackEnd(FrameResult* result);
-  void RethrowBackEndError();                         ///< lock held
+  void RethrowBackEndError();  ///< lock held
+  void DropBackEndWork();      ///< forgets queued keyframes and unreported runs; lock held
   const Map& map() const { return odometry_.map(); }  ///< lock held
 
   const BackEndMode mode_;
+  const RefinedPoseRecording refined_recording_;
   mutable std::mutex map_mutex_;  ///< the one lock: guards every member below (policy above)
   Odometry odometry_;
   RefinedTrajectory refined_;
