@@ -91,7 +91,11 @@ bool OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
     frame->stamp_s = input.colour->header.stamp.toSec();
     frame->colour = ColourFromImage(*input.colour);
     frame->depth_m = DepthFromImage(*input.depth);
-    frame->camera = yaml_camera_ ? yaml_camera_ : CameraFromInfo(*input.info);
+    frame->camera = yaml_camera_
+                        ? yaml_camera_
+                        : CameraFromInfo(*input.info, *input.colour,
+                                         config_.rectified_input ? ImageGeometry::kRectified
+                                                                 : ImageGeometry::kRaw);
   } catch (const std::exception& e) {
     NODELET_ERROR_THROTTLE(1.0, "dslam: bad input, frame skipped: %s", e.what());
     return false;

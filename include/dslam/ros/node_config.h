@@ -20,6 +20,7 @@ struct NodeConfig {
   bool exact_sync = false;
   int queue_size = 10;
   std::string camera_yaml = "";
+  bool rectified_input = false;
   int path_max_poses = 10000;
   double tf_wait_s = 0.0;
   bool backend_threads = true;
@@ -36,6 +37,10 @@ struct NodeConfig {
     v(Field("queue_size", "-", 1, 1000, "synchroniser queue length per input"), s.queue_size);
     v(Field("camera_yaml", "-", 0, 0, "camera.yaml with calibrated intrinsics; empty: camera_info"),
       s.camera_yaml);
+    v(Flag("rectified_input",
+           "the colour and depth topics are rectified (image_rect*): intrinsics from camera_info "
+           "P, no distortion; false: raw images, K and D"),
+      s.rectified_input);
     v(Field("path_max_poses", "-", 1, 10000000, "poses kept in the path message"),
       s.path_max_poses);
     v(Field("tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at the first frame"),
