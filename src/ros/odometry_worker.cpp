@@ -68,7 +68,11 @@ std::string OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
     frame->stamp_s = input.colour->header.stamp.toSec();
     frame->colour = ColourFromImage(*input.colour);
     frame->depth_m = DepthFromImage(*input.depth);
-    frame->camera = yaml_camera_ ? yaml_camera_ : CameraFromInfo(*input.info);
+    frame->camera = yaml_camera_
+                        ? yaml_camera_
+                        : CameraFromInfo(*input.info, *input.colour,
+                                         config_.rectified_input ? ImageGeometry::kRectified
+                                                                 : ImageGeometry::kRaw);
   } catch (const std::exception& e) {
     return e.what();
   }

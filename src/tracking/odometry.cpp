@@ -1,6 +1,7 @@
 #include "dslam/tracking/odometry.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
@@ -38,6 +39,13 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   current.features = ExtractFeatures(frame, config_.features, config_.depth_noise);
   current.feature_taken.assign(current.features.features.size(), false);
   result.times.features_ms = stage.Restart();
+  const int num_features = static_cast<int>(current.features.features.size());
+  if (num_features < config_.tracking.min_static_inliers) {
+    // No pose can reach min_static_inliers inliers; say why instead of "too few pose inliers".
+    const std::string why = "too few features (" + std::to_string(num_features) +
+                            " ORB keypoints: black, saturated or textureless image?)";
+    return Lost(&current, std::move(result), why.c_str());
+  }
   if (!initialised_) return Initialise(&current, std::move(result));
 
   // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).

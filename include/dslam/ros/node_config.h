@@ -20,6 +20,7 @@ struct NodeConfig {
   bool exact_sync = false;
   int queue_size = 10;
   std::string camera_yaml = "";
+  bool rectified_input = false;
   int path_max_poses = 10000;
   double path_rate_hz = 2.0;
   std::string trajectory_stream = "";
@@ -41,6 +42,10 @@ struct NodeConfig {
     v(Field("queue_size", "-", 1, 1000, "synchroniser queue length per input"), s.queue_size);
     v(Field("camera_yaml", "-", 0, 0, "camera.yaml with calibrated intrinsics; empty: camera_info"),
       s.camera_yaml);
+    v(Flag("rectified_input",
+           "the colour and depth topics are rectified (image_rect*): intrinsics from camera_info "
+           "P, no distortion; false: raw images, K and D"),
+      s.rectified_input);
     v(Field("path_max_poses", "-", 1, 10000000, "poses kept in the path message (a ring)"),
       s.path_max_poses);
     v(Field("path_rate_hz", "Hz", 0.01, 1000.0,
