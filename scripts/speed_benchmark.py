@@ -26,7 +26,22 @@ from dslam_tools import speed_report  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
-SHARED = os.path.join(os.path.dirname(REPO), "shared", "data")
+
+
+def shared_data():
+    """../shared/data beside this checkout, or beside the main checkout when this one is a git
+    worktree elsewhere (its common .git folder is the main checkout's)."""
+    common = subprocess.run(["git", "-C", REPO, "rev-parse", "--path-format=absolute",
+                             "--git-common-dir"], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                            text=True).stdout.strip()
+    for checkout in [REPO] + ([os.path.dirname(common)] if common else []):
+        path = os.path.join(os.path.dirname(checkout), "shared", "data")
+        if os.path.isdir(path):
+            return path
+    return os.path.join(os.path.dirname(REPO), "shared", "data")
+
+
+SHARED = shared_data()
 RATE_HZ = 30.0
 SYNTH_FRAMES, SYNTH_SEED = 300, 1
 CURRENT_ARGS = ["--threads", "--rate", f"{RATE_HZ:g}", "--backend", "on"]
@@ -68,14 +83,19 @@ def tool_target(tree, tool):
 
 
 def prepare_reference(commit):
-    """Extracts and builds the reference commit once; returns (bin folder, full hash, build
-    time [s] or None when it was already built)."""
+    """Extracts and builds the reference commit once; returns (bin folder, full hash, text on
+    the build: its wall time, measured when it was built and kept in the workspace)."""
     full = git("rev-parse", "--verify", commit + "^{commit}")
     tree = os.path.join(REPO, "build", "reference", commit)
     ws = tree + "-ws"
     bin_dir = os.path.join(ws, "devel", "lib", "dslam")
+    timing = os.path.join(ws, "reference_build_seconds.txt")
     if os.access(os.path.join(bin_dir, "dslam_run_dataset"), os.X_OK):
-        return bin_dir, full, None
+        seconds = "unknown"
+        if os.path.exists(timing):
+            with open(timing) as handle:
+                seconds = handle.read().strip()
+        return bin_dir, full, f"built before this run (its build took {seconds} s)"
     if not os.path.exists(os.path.join(tree, ".extracted")):
         os.makedirs(tree, exist_ok=True)
         archive = subprocess.Popen(["git", "-C", REPO, "archive", "--format=tar", full],
@@ -89,7 +109,10 @@ def prepare_reference(commit):
     start = time.monotonic()
     check_run([os.path.join(tree, "scripts", "setup.sh"), tool_target(tree, "dslam_run_dataset")],
               env=build_env(ws))
-    return bin_dir, full, time.monotonic() - start
+    seconds = f"{time.monotonic() - start:.0f}"
+    with open(timing, "w") as handle:
+        handle.write(seconds + "\n")
+    return bin_dir, full, f"built in this run in {seconds} s"
 
 
 def prepare_current(build):
@@ -210,7 +233,7 @@ def main():
     current_commit = git("rev-parse", "HEAD")
     dirty = " (with uncommitted changes)" if git("status", "--porcelain", "--untracked-files=no") \
         else ""
-    ref_bin, ref_full, ref_build_s = prepare_reference(args.reference_commit)
+    ref_bin, ref_full, ref_build = prepare_reference(args.reference_commit)
     bins = {"reference": ref_bin, "current": prepare_current(not args.no_build)}
     cache = os.path.join(REPO, "build", "speed_bench", "cache")
     lines, notes, results = [], [], {}
@@ -233,8 +256,7 @@ def main():
         f"{load_before} before the runs, {load()} after the runs",
         f"rounds: {args.rounds} (A B per sequence and round; medians over rounds, max backlog "
         f"and peak RSS: maximum over rounds); wall time {time.monotonic() - started:.0f} s",
-        "reference build: " + ("already built" if ref_build_s is None else
-                               f"{ref_build_s:.0f} s (setup.sh, dslam_run_dataset only)"),
+        f"reference build (its scripts/setup.sh, dslam_run_dataset only): {ref_build}",
         "", speed_report.table_header(label)] + lines + [""] + notes)
     print(report)
     os.makedirs(args.out, exist_ok=True)
