@@ -1,5 +1,6 @@
 #include "dslam/backend/slam.h"
 
+#include <stdexcept>
 #include <utility>
 
 #include "dslam/backend/window_static_points.h"
@@ -7,7 +8,8 @@
 
 namespace dslam {
 
-Slam::Slam(const Config& config, BackEndMode mode) : mode_(mode), odometry_(config) {
+Slam::Slam(const Config& config, BackEndMode mode, RefinedPosesRecording refined)
+    : mode_(mode), refined_recording_(refined), odometry_(config) {
   if (mode_ == BackEndMode::kThreaded) back_end_ = std::thread(&Slam::BackEndLoop, this);
 }
 
@@ -18,7 +20,9 @@ FrameResult Slam::ProcessFrame(const RgbdFrame& frame) {
   // Front end (Sec. V-A, V-B): features, local-map matching, pose from static points, front-end
   // static point determination, map management and keyframes.
   FrameResult result = odometry_.ProcessFrame(frame);
-  if (result.has_pose) refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
+  if (result.has_pose && refined_recording_ == RefinedPosesRecording::kOn) {
+    refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
+  }
   if (mode_ == BackEndMode::kThreaded) ExchangeWithBackEnd(&result);
   result.times.tracking_ms = tracking.ElapsedMs();
   // Back end (Sec. V): local mapping on the window the new keyframe completes.
@@ -49,7 +53,7 @@ BackEndStatus Slam::RunLocalMapping() {
   // Tracking goes on from the refined pose of the keyframe just made (this frame).
   if (ba.ran && !ba.rejected) {
     odometry_.AdoptNewestKeyFramePose();
-    refined_.UpdateKeyFrames(map());
+    if (refined_recording_ == RefinedPosesRecording::kOn) refined_.UpdateKeyFrames(map());
   }
   status.ran = ba.ran;
   status.window_keyframes = static_cast<int>(map().keyframes().size());
@@ -142,6 +146,9 @@ void Slam::HoldBackEnd(bool hold) {
 }
 
 Trajectory Slam::RefinedPoses() const {
+  if (refined_recording_ != RefinedPosesRecording::kOn) {
+    throw std::logic_error("Slam::RefinedPoses: not recorded (RefinedPosesRecording::kOff)");
+  }
   const Lock lock(map_mutex_);
   return refined_.Poses();
 }

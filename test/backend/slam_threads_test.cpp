@@ -3,6 +3,7 @@
 // destruction with keyframes queued. Also run under ThreadSanitizer by scripts/sanitize.sh.
 #include <chrono>
 #include <future>
+#include <stdexcept>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -37,7 +38,7 @@ struct RunResult {
 
 // Feeds every frame, `gap` apart (a camera's frame interval), then collects the runs left over.
 RunResult RunSequence(BackEndMode mode, std::chrono::milliseconds gap) {
-  Slam slam(BackEndOn(), mode);
+  Slam slam(BackEndOn(), mode, RefinedPosesRecording::kOn);
   Trajectory estimated;
   RunResult out;
   for (const RgbdFrame& frame : Sequence().frames) {
@@ -198,6 +199,25 @@ TEST(SlamThreads, SynchronousModeReportsEachRunWithItsKeyFrame) {
   EXPECT_EQ(r.backend_thread.backlog, 0);
   slam.WaitForBackEnd();
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());
+}
+
+// The refined trajectory is kept only when asked for (a node running for hours must not keep a
+// record of every frame): off, RefinedPoses() throws; on, it has one pose per tracked frame.
+TEST(SlamRefinedPoses, RecordedOnlyWhenAsked) {
+  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
+    Slam off(BackEndOn(), mode);
+    Slam on(BackEndOn(), mode, RefinedPosesRecording::kOn);
+    size_t with_pose = 0;
+    for (int i = 0; i < 12; ++i) {
+      off.ProcessFrame(Sequence().frames[i]);
+      with_pose += on.ProcessFrame(Sequence().frames[i]).has_pose;
+    }
+    off.WaitForBackEnd();
+    on.WaitForBackEnd();
+    EXPECT_THROW(off.RefinedPoses(), std::logic_error);
+    EXPECT_EQ(with_pose, 12u);
+    EXPECT_EQ(on.RefinedPoses().size(), with_pose);
+  }
 }
 
 }  // namespace

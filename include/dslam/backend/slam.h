@@ -46,6 +46,14 @@ enum class BackEndMode {
   kThreaded,     ///< on Slam's back-end thread, beside the caller's tracking thread
 };
 
+/// Whether Slam records every tracked frame for RefinedPoses(). Recording keeps 144 bytes per
+/// tracked frame and ~160 per keyframe (measured with heaptrack) for the life of the Slam, which
+/// a node running for hours must not; the causal poses of FrameResult need none of it.
+enum class RefinedPosesRecording {
+  kOff,  ///< RefinedPoses() throws; memory does not grow with the frames
+  kOn,   ///< for offline runs that write the refined trajectory (dslam_run_dataset)
+};
+
 /// Front end and back end over one map. ProcessFrame, Reset, WaitForBackEnd and
 /// TakeUnreportedRuns are for one (tracking) thread; the getters may be called from any thread
 /// (locking policy above).
@@ -53,7 +61,8 @@ class Slam {
  public:
   /// Starts the back-end thread in BackEndMode::kThreaded. Throws ConfigError when `config` is
   /// invalid.
-  explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous);
+  explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous,
+                RefinedPosesRecording refined = RefinedPosesRecording::kOff);
   /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued.
   ~Slam();
   Slam(const Slam&) = delete;
@@ -88,6 +97,7 @@ class Slam {
 
   /// Every tracked frame re-expressed on its reference keyframe as refined by the back end so
   /// far (RefinedTrajectory, a copy); the same poses as the causal ones with the back end off.
+  /// Throws std::logic_error unless constructed with RefinedPosesRecording::kOn.
   Trajectory RefinedPoses() const;
 
   /// A copy of the map (keyframe window and points) between two runs of either thread.
@@ -109,9 +119,10 @@ class Slam {
   const Map& map() const { return odometry_.map(); }  ///< lock held
 
   const BackEndMode mode_;
+  const RefinedPosesRecording refined_recording_;
   mutable std::mutex map_mutex_;  ///< the one lock: guards every member below (policy above)
   Odometry odometry_;
-  RefinedTrajectory refined_;
+  RefinedTrajectory refined_;     ///< empty unless refined_recording_ is kOn
   std::condition_variable work_;  ///< back-end thread: keyframes queued, hold released or stop
   std::condition_variable idle_;  ///< WaitForBackEnd: a run finished
   int pending_ = 0;               ///< [keyframes] queued and not started (the backlog)
