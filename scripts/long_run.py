@@ -14,9 +14,9 @@ end it checks:
 Exit status 0 when all hold, 1 otherwise, 2 when the run itself failed.
 
   scripts/long_run.py [--minutes 10] [--seed 1] [--rate 30] [--out build/long_run]
-                      [--param backend/enabled=true ...] [--keep-logs]
-Needs the built workspace (DSLAM_WS or build/ws; targets dslam_odometry_node_main,
-dslam_replay_main, dslam_synth_main).
+                      [--param KEY=VALUE ...] [--node-wrapper 'heaptrack -o FILE']
+Needs the built workspace (DSLAM_WS or build/ws; targets dslam_ros, dslam_odometry_node_main,
+dslam_replay_main, dslam_synth_main, dslam_generate_messages_py).
 """
 
 import argparse
@@ -167,7 +167,8 @@ def render(env, out, seed):
     folder = os.path.join(out, "loop_s%d" % seed)
     if not os.path.isdir(folder):
         partial = folder + ".partial"  # renamed when complete: an interrupted render is redone
-        print("long_run: rendering the loop scenario (seed %d) into %s" % (seed, folder), flush=True)
+        print("long_run: rendering the loop scenario (seed %d) into %s" % (seed, folder),
+              flush=True)
         subprocess.run(["rm", "-rf", partial], check=True)
         subprocess.run([os.path.join(BIN, "dslam_synth"), "--scenario", "loop", "--seed",
                         str(seed), "--output", partial], env=env, check=True,
@@ -263,10 +264,9 @@ def check(rows, final, published):
     if len(rows) >= 3:
         for key, name in [("rss", "VmRSS"), ("hwm", "VmHWM")]:
             growth = rows[-1][key] / rows[1][key] - 1.0
-            results.append((growth < MEMORY_GROWTH_LIMIT,
-                            "%s growth after minute 2: %.1f -> %.1f MB (%+.1f %%, limit %.0f %%)" % (
-                                name, rows[1][key], rows[-1][key], 100 * growth,
-                                100 * MEMORY_GROWTH_LIMIT)))
+            text = "%s growth after minute 2: %.1f -> %.1f MB (%+.1f %%, limit %.0f %%)" % (
+                name, rows[1][key], rows[-1][key], 100 * growth, 100 * MEMORY_GROWTH_LIMIT)
+            results.append((growth < MEMORY_GROWTH_LIMIT, text))
     else:
         results.append((False, "memory growth after minute 2 needs --minutes >= 3"))
     first = statistics.median(rows[0]["bucket"]["tracking_ms"] or [float("nan")])
@@ -341,7 +341,8 @@ def main():
     args.out = os.path.abspath(args.out)
     if os.environ.get("DSLAM_LONG_RUN_ENV") != "1":  # re-run inside the workspace's environment
         env = ros_environment()
-        env.update(DSLAM_LONG_RUN_ENV="1", ROSCONSOLE_STDOUT_LINE_BUFFERED="1", ROS_MASTER_URI="http://localhost:%d" % free_port(),
+        env.update(DSLAM_LONG_RUN_ENV="1", ROSCONSOLE_STDOUT_LINE_BUFFERED="1",
+                   ROS_MASTER_URI="http://localhost:%d" % free_port(),
                    ROS_HOME=os.path.join(args.out, "ros_home"))
         os.execve("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv, env)
     args.log_dir = os.path.join(args.out, "logs", time.strftime("%Y%m%d-%H%M%S"))
