@@ -10,7 +10,7 @@
 # outside DSLAM_<NAME>_ALLOWED, or when a part other than `ros` includes a ROS header.
 
 set(DSLAM_ROS_HEADER_REGEX
-  "#include [<\"](ros|nodelet|pluginlib|tf2_ros|tf2_eigen|cv_bridge|message_filters|sensor_msgs|nav_msgs|geometry_msgs|visualization_msgs|std_msgs|std_srvs|pcl_conversions|dslam/[A-Z][A-Za-z]*\\.h)")
+  "#include [<\"](ros|nodelet|pluginlib|tf2_ros|tf2_eigen|cv_bridge|image_transport|message_filters|sensor_msgs|nav_msgs|geometry_msgs|visualization_msgs|std_msgs|std_srvs|pcl_conversions|dslam/[A-Z][A-Za-z]*\\.h)")
 
 function(dslam_check_includes name)
   file(GLOB_RECURSE files CONFIGURE_DEPENDS

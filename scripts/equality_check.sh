@@ -45,7 +45,7 @@ for folder in "${sequences[@]}"; do
     fi
   done
 done
-# Render comparison: the benchmark scenarios and `loop` (the long-run input, scripts/long_run).
+# Render comparison: the benchmark scenarios and `loop` (the long-run input, scripts/long_run.py).
 RENDERED="$SCENARIOS$(grep -qx loop <<< "$known" && echo " loop" || true)"
 for scenario in $RENDERED; do
   for side in before after; do

@@ -1,26 +1,25 @@
 #include "dslam/backend/slam.h"
 
-#include <stdexcept>
 #include <utility>
 
-#include "dslam/backend/window_static_points.h"
 #include "dslam/core/stopwatch.h"
 
 namespace dslam {
 
-Slam::Slam(const Config& config, BackEndMode mode, RefinedPosesRecording refined)
+Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined)
     : mode_(mode), refined_recording_(refined), odometry_(config) {
   if (mode_ == BackEndMode::kThreaded) back_end_ = std::thread(&Slam::BackEndLoop, this);
 }
 
-FrameResult Slam::ProcessFrame(const RgbdFrame& frame) {
+FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
   const Stopwatch tracking;  // this thread's time: waiting for the lock, front end, bookkeeping
   const Lock lock(map_mutex_);
   RethrowBackEndError();
   // Front end (Sec. V-A, V-B): features, local-map matching, pose from static points, front-end
   // static point determination, map management and keyframes.
-  FrameResult result = odometry_.ProcessFrame(frame);
-  if (result.has_pose && refined_recording_ == RefinedPosesRecording::kOn) {
+  FrameResult result = odometry_.ProcessFrame(frame, request);
+  if (result.reset) DropBackEndWork();  // the old world's keyframes and runs
+  if (result.has_pose && refined_recording_ == RefinedPoseRecording::kOn) {
     refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
   }
   if (mode_ == BackEndMode::kThreaded) ExchangeWithBackEnd(&result);
@@ -33,45 +32,28 @@ FrameResult Slam::ProcessFrame(const RgbdFrame& frame) {
 }
 
 BackEndStatus Slam::RunLocalMapping() {
-  BackEndStatus status;
-  // Algorithm 1 over the window first: local BA then uses only the points that stayed marked.
-  if (config().backend.spd_enabled && config().static_points.enabled) {
-    const WindowStaticPointsStats spd =
-        DetermineStaticPointsInWindow(config(), odometry_.mutable_map());
-    status.spd_ran = spd.ran;
-    status.spd_keyframes = spd.keyframes;
-    status.spd_points = spd.points;
-    status.spd_edges = spd.edges;
-    status.spd_culled_edges = spd.culled_edges;
-    status.spd_unmarked = spd.unmarked;
-    status.spd_graph_ms = spd.graph_ms;
-    status.spd_culling_ms = spd.culling_ms;
-    status.spd_components_ms = spd.components_ms;
-    status.spd_ms = spd.total_ms;
-  }
-  const LocalBaStats ba = LocalBundleAdjustment(config().backend, odometry_.mutable_map());
+  LocalMappingJob job(map(), generation_);
+  job.Run(config());
+  return FinishLocalMapping(job);
+}
+
+BackEndStatus Slam::FinishLocalMapping(const LocalMappingJob& job) {
+  job.Apply(odometry_.mutable_map());
   // Tracking goes on from the refined pose of the keyframe just made (this frame).
-  if (ba.ran && !ba.rejected) {
+  if (job.moved_keyframes()) {
     odometry_.AdoptNewestKeyFramePose();
-    if (refined_recording_ == RefinedPosesRecording::kOn) refined_.UpdateKeyFrames(map());
+    if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
   }
-  status.ran = ba.ran;
+  BackEndStatus status = job.status();
   status.window_keyframes = static_cast<int>(map().keyframes().size());
-  status.ba_keyframes = ba.keyframes;
-  status.ba_points = ba.points;
-  status.ba_measurements = ba.measurements;
-  status.ba_outliers = ba.outliers;
-  status.ba_iterations = ba.iterations;
-  status.ba_rejected = ba.rejected;
-  status.ba_ms = ba.time_ms;
   return status;
 }
 
 Slam::~Slam() {
   if (!back_end_.joinable()) return;
   {
-    const Lock lock(map_mutex_);  // a run in progress holds it: this waits for its end
-    stop_ = true;
+    const Lock lock(map_mutex_);
+    stop_ = true;  // a job in progress finishes, then the thread ends
   }
   work_.notify_all();
   back_end_.join();
@@ -83,11 +65,18 @@ void Slam::BackEndLoop() {
     work_.wait(lock, [this] { return stop_ || (pending_ > 0 && !held_); });
     if (stop_) return;  // queued keyframes are dropped
     pending_ = 0;       // one run for all of them: the window of the newest keyframe
+    running_ = true;
     try {
-      completed_.push_back(RunLocalMapping());
+      LocalMappingJob job(map(), generation_);
+      lock.unlock();  // tracking goes on while the job works on its copy
+      job.Run(config());
+      lock.lock();
+      if (job.generation() == generation_) completed_.push_back(FinishLocalMapping(job));
     } catch (...) {
+      if (!lock.owns_lock()) lock.lock();
       error_ = std::current_exception();
     }
+    running_ = false;
     idle_.notify_all();
   }
 }
@@ -113,11 +102,16 @@ void Slam::RethrowBackEndError() {
   std::rethrow_exception(error);
 }
 
-void Slam::Reset() {
-  const Lock lock(map_mutex_);  // waits for a run in progress
+void Slam::Reset(ResetMode mode) {
+  const Lock lock(map_mutex_);
+  DropBackEndWork();
+  odometry_.Reset(mode);
+}
+
+void Slam::DropBackEndWork() {
   pending_ = 0;
   completed_.clear();
-  odometry_.Reset();
+  ++generation_;  // a job in progress belongs to the old map
 }
 
 void Slam::WaitForBackEnd() {
@@ -126,7 +120,7 @@ void Slam::WaitForBackEnd() {
     held_ = false;
     work_.notify_all();
   }
-  idle_.wait(lock, [this] { return pending_ == 0; });  // the lock held: no run in progress
+  idle_.wait(lock, [this] { return pending_ == 0 && !running_; });
   RethrowBackEndError();
 }
 
@@ -146,9 +140,6 @@ void Slam::HoldBackEnd(bool hold) {
 }
 
 Trajectory Slam::RefinedPoses() const {
-  if (refined_recording_ != RefinedPosesRecording::kOn) {
-    throw std::logic_error("Slam::RefinedPoses: not recorded (RefinedPosesRecording::kOff)");
-  }
   const Lock lock(map_mutex_);
   return refined_.Poses();
 }

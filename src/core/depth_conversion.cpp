@@ -1,6 +1,7 @@
 #include "dslam/core/depth_conversion.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -38,6 +39,9 @@ cv::Mat ReadDepthPng(const std::string& path, double units_per_metre) {
   return DepthFromScaledUint16(raw, units_per_metre);
 }
 
-int CountValidDepth(const cv::Mat& depth_m) { return cv::countNonZero(depth_m > 0.0f); }
+int CountValidDepth(const cv::Mat& depth_m) {
+  // NaN compares false; +inf is excluded by the upper bound.
+  return cv::countNonZero((depth_m > 0.0f) & (depth_m < std::numeric_limits<float>::infinity()));
+}
 
 }  // namespace dslam

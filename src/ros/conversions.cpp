@@ -1,8 +1,9 @@
 #include "dslam/ros/conversions.h"
 
+#include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
-#include <cv_bridge/cv_bridge.h>
 #include <sensor_msgs/image_encodings.h>
 #include <opencv2/imgproc.hpp>
 
@@ -19,51 +20,83 @@ std::string NormaliseFrameId(const std::string& frame_id) {
   return first == std::string::npos ? std::string() : frame_id.substr(first);
 }
 
+namespace {
+
+constexpr bool kHostBigEndian = __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__;
+
+std::string SizeText(uint32_t width, uint32_t height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+/// Copies the pixel rows of `image` into a new continuous Mat of OpenCV `type`, swapping the bytes
+/// of multi-byte channels when the message's byte order differs from the host's. Checks size, step
+/// and data length first (`what` names the image in the messages).
+cv::Mat CopyPixels(const sensor_msgs::Image& image, int type, const std::string& what) {
+  if (image.width == 0 || image.height == 0) {
+    throw std::invalid_argument(what + " is empty (" + SizeText(image.width, image.height) + ")");
+  }
+  const size_t pixel_bytes = CV_ELEM_SIZE(type);
+  const size_t row_bytes = image.width * pixel_bytes;
+  if (image.step < row_bytes) {
+    throw std::invalid_argument(what + " step " + std::to_string(image.step) +
+                                " is shorter than a row (" + std::to_string(image.width) +
+                                " px x " + std::to_string(pixel_bytes) + " bytes of " +
+                                image.encoding + ")");
+  }
+  const size_t needed = static_cast<size_t>(image.step) * image.height;
+  if (image.data.size() != needed) {
+    throw std::invalid_argument(
+        what + (image.data.size() < needed ? " is truncated: " : " is inconsistent: ") +
+        std::to_string(image.data.size()) +
+        " data bytes, step x height = " + std::to_string(needed));
+  }
+  cv::Mat out(static_cast<int>(image.height), static_cast<int>(image.width), type);
+  for (int r = 0; r < out.rows; ++r) {
+    std::memcpy(out.ptr(r), image.data.data() + static_cast<size_t>(r) * image.step, row_bytes);
+  }
+  const size_t channel_bytes = CV_ELEM_SIZE1(type);
+  if (channel_bytes > 1 && (image.is_bigendian != 0) != kHostBigEndian) {
+    uint8_t* bytes = out.data;
+    const size_t total = out.total() * pixel_bytes;
+    for (size_t i = 0; i < total; i += channel_bytes)
+      std::reverse(bytes + i, bytes + i + channel_bytes);
+  }
+  return out;
+}
+
+}  // namespace
+
 cv::Mat ColourFromImage(const sensor_msgs::Image& image) {
   const std::string& e = image.encoding;
-  if (e != enc::RGB8 && e != enc::BGR8 && e != enc::MONO8) {
-    throw std::invalid_argument("colour encoding '" + e + "' is not rgb8, bgr8 or mono8");
+  const std::string what = "colour image (" + e + ")";
+  if (e == enc::BGR8 || e == enc::MONO8) {
+    return CopyPixels(image, e == enc::MONO8 ? CV_8UC1 : CV_8UC3, what);
   }
-  const cv_bridge::CvImageConstPtr cv = cv_bridge::toCvShare(image, nullptr);
   cv::Mat out;
-  if (e == enc::RGB8)
-    cv::cvtColor(cv->image, out, cv::COLOR_RGB2BGR);
-  else
-    out = cv->image.clone();
+  if (e == enc::RGB8) {
+    cv::cvtColor(CopyPixels(image, CV_8UC3, what), out, cv::COLOR_RGB2BGR);
+  } else if (e == enc::RGBA8) {
+    cv::cvtColor(CopyPixels(image, CV_8UC4, what), out, cv::COLOR_RGBA2BGR);
+  } else if (e == enc::BGRA8) {
+    cv::cvtColor(CopyPixels(image, CV_8UC4, what), out, cv::COLOR_BGRA2BGR);
+  } else {
+    throw std::invalid_argument("colour image encoding '" + e +
+                                "' is not supported (accepted: rgb8, bgr8, rgba8, bgra8, mono8; "
+                                "subscribe to a debayered topic such as image_color)");
+  }
   return out;
 }
 
 cv::Mat DepthFromImage(const sensor_msgs::Image& image) {
   const std::string& e = image.encoding;
-  if (e != enc::TYPE_16UC1 && e != enc::TYPE_32FC1 && e != enc::MONO16) {
-    throw std::invalid_argument("depth encoding '" + e +
-                                "' is not 16UC1 (millimetres) or 32FC1 (metres)");
+  const std::string what = "depth image (" + e + ")";
+  if (e == enc::TYPE_32FC1) return DepthFromMetres(CopyPixels(image, CV_32FC1, what));
+  if (e == enc::TYPE_16UC1 || e == enc::MONO16) {
+    return DepthFromMillimetres(CopyPixels(image, CV_16UC1, what));
   }
-  const cv_bridge::CvImageConstPtr cv = cv_bridge::toCvShare(image, nullptr);
-  if (e == enc::TYPE_32FC1) return DepthFromMetres(cv->image);
-  return DepthFromMillimetres(cv->image);
-}
-
-std::shared_ptr<const PinholeCamera> CameraFromInfo(const sensor_msgs::CameraInfo& info) {
-  if (info.width == 0 || info.height == 0 || info.K[0] <= 0.0 || info.K[4] <= 0.0) {
-    throw std::invalid_argument("camera_info has no size or no intrinsics (K)");
-  }
-  Distortion d;
-  bool any = false;
-  for (double c : info.D) any = any || c != 0.0;
-  if (any) {
-    if (info.distortion_model != "plumb_bob" && info.distortion_model != "rational_polynomial") {
-      throw std::invalid_argument("camera_info distortion model '" + info.distortion_model +
-                                  "' is not plumb_bob");
-    }
-    const auto at = [&](size_t i) { return i < info.D.size() ? info.D[i] : 0.0; };
-    for (size_t i = 5; i < info.D.size(); ++i) {
-      if (info.D[i] != 0.0) throw std::invalid_argument("rational_polynomial k4..k6 unsupported");
-    }
-    d.k1 = at(0), d.k2 = at(1), d.p1 = at(2), d.p2 = at(3), d.k3 = at(4);
-  }
-  return std::make_shared<const PinholeCamera>(info.width, info.height, info.K[0], info.K[4],
-                                               info.K[2], info.K[5], d);
+  throw std::invalid_argument("depth image encoding '" + e +
+                              "' is not supported (accepted: 16UC1 or mono16 millimetres, 32FC1 "
+                              "metres)");
 }
 
 Eigen::Isometry3d DefaultBaseFromOptical() {

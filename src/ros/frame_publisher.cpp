@@ -30,10 +30,9 @@ void FramePublisher::Publish(const FrameResult& result, const RgbdFrame& frame,
                              const FrameCounters& counters, double latency_ms) {
   std_msgs::Header odom_header = header;
   odom_header.frame_id = config_.odom_frame;
-  if (result.reset) ClearPath();
   if (result.has_pose) PublishPose(result, odom_header, T_base_camera);
   PublishVisuals(result, frame, header, odom_header, T_base_camera);
-  PublishStatus(result, odom_header, counters, latency_ms);
+  PublishStatus(result, ToString(result.state), odom_header, counters, latency_ms);
 }
 
 void FramePublisher::PublishPose(const FrameResult& result, const std_msgs::Header& odom_header,
@@ -60,22 +59,47 @@ void FramePublisher::PublishPose(const FrameResult& result, const std_msgs::Head
   geometry_msgs::PoseStamped stamped;
   stamped.header = odom_header;
   stamped.pose = pose;
-  path_.poses.push_back(stamped);
-  const size_t max_poses = static_cast<size_t>(config_.path_max_poses);
-  if (path_.poses.size() > max_poses) {
-    path_.poses.erase(path_.poses.begin(), path_.poses.end() - max_poses);
-  }
-  if (path_pub_.getNumSubscribers() > 0) {
-    path_.header = odom_header;
-    path_pub_.publish(path_);
-  }
+  UpdatePath(stamped);
 }
 
-void FramePublisher::PublishStatus(const FrameResult& r, const std_msgs::Header& odom_header,
+void FramePublisher::UpdatePath(const geometry_msgs::PoseStamped& pose) {
+  path_.push_back(pose);
+  while (path_.size() > static_cast<size_t>(config_.path_max_poses)) path_.pop_front();
+  const ros::WallTime now = ros::WallTime::now();
+  if (path_pub_.getNumSubscribers() == 0 ||
+      (now - path_published_).toSec() < 1.0 / config_.path_rate_hz) {
+    return;
+  }
+  path_published_ = now;
+  nav_msgs::Path path;
+  path.header = pose.header;
+  path.poses.assign(path_.begin(), path_.end());
+  path_pub_.publish(path);
+}
+
+bool FramePublisher::WantsPoints() const {
+  return static_pub_.getNumSubscribers() > 0 || dynamic_pub_.getNumSubscribers() > 0 ||
+         features_pub_.getNumSubscribers() > 0;
+}
+
+bool FramePublisher::WantsEdges() const { return edges_pub_.getNumSubscribers() > 0; }
+
+void FramePublisher::PublishRejected(const std::string& problem, const std_msgs::Header& header,
+                                     const FrameCounters& counters, double latency_ms) {
+  FrameResult rejected;
+  rejected.stamp_s = header.stamp.toSec();
+  rejected.message = problem;
+  std_msgs::Header odom_header = header;
+  odom_header.frame_id = config_.odom_frame;
+  PublishStatus(rejected, "rejected", odom_header, counters, latency_ms);
+}
+
+void FramePublisher::PublishStatus(const FrameResult& r, const std::string& state,
+                                   const std_msgs::Header& odom_header,
                                    const FrameCounters& counters, double latency_ms) {
   dslam::FrameStatus s;
   s.header = odom_header;
-  s.state = ToString(r.state);
+  s.state = state;
   s.has_pose = r.has_pose;
   s.keyframe = r.keyframe;
   s.reset = r.reset;

@@ -1,10 +1,12 @@
+// OdometryNodelet: start-up, subscriptions, the input watchdog and the services. The worker
+// thread's processing is in odometry_worker.cpp.
 #include "dslam/ros/odometry_nodelet.h"
 
-#include <tf2_eigen/tf2_eigen.h>
+#include <stdexcept>
+
 #include <pluginlib/class_list_macros.hpp>
 
 #include "dslam/io/dataset_io.h"
-#include "dslam/ros/conversions.h"
 #include "dslam/ros/param_loader.h"
 
 namespace dslam {
@@ -13,6 +15,7 @@ namespace ros_layer {
 OdometryNodelet::~OdometryNodelet() {
   // message_filters throws boost::lock_error when a filter is destroyed while a synchronizer
   // connected to it still exists: destroy the synchronizers first, then the filters.
+  watchdog_timer_.stop();
   approximate_sync_.reset();
   exact_sync_.reset();
   for (auto* sub : {colour_sub_.get(), depth_sub_.get()}) {
@@ -30,12 +33,15 @@ void OdometryNodelet::onInit() {
   try {
     LoadRosParams(pnh, &config, &config_);
     if (!config_.camera_yaml.empty()) yaml_camera_ = LoadCameraYaml(config_.camera_yaml).camera;
+    recorder_ = std::make_unique<TrajectoryRecorder>(config_.trajectory_stream);
     slam_ = std::make_unique<Slam>(
-        config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous);
+        config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous,
+        RefinedPoseRecording::kOff);  // memory stays flat; the node saves causal poses
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
-    return;
+    throw std::runtime_error(std::string("dslam: invalid parameters: ") + e.what());
   }
+  stamps_ = std::make_unique<StampCheck>(config.tracking.max_prediction_gap_s);
   publisher_ = std::make_unique<FramePublisher>(nh, config_);
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
@@ -44,12 +50,19 @@ void OdometryNodelet::onInit() {
   save_srv_ = nh.advertiseService("save_trajectory", &OdometryNodelet::OnSaveTrajectory, this);
   worker_ = std::thread(&OdometryNodelet::WorkerLoop, this);
   Subscribe(nh);
+  WatchInputs(nh);
 }
 
 void OdometryNodelet::Subscribe(ros::NodeHandle& nh) {
   const int q = config_.queue_size;
-  colour_sub_ = std::make_unique<ImageSub>(nh, "rgb/image", q);
-  depth_sub_ = std::make_unique<ImageSub>(nh, "depth/image", q);
+  // As image_pipeline: the transport of each image by a parameter (read here from config_, which
+  // LoadRosParams checked), e.g. compressed colour and compressedDepth depth.
+  transport_ = std::make_unique<image_transport::ImageTransport>(nh);
+  colour_sub_ = std::make_unique<image_transport::SubscriberFilter>(
+      *transport_, "rgb/image", q, image_transport::TransportHints(config_.image_transport));
+  depth_sub_ = std::make_unique<image_transport::SubscriberFilter>(
+      *transport_, "depth/image", q,
+      image_transport::TransportHints(config_.depth_image_transport));
   info_sub_ = std::make_unique<InfoSub>(nh, "rgb/camera_info", q);
   if (config_.exact_sync) {
     exact_sync_ = std::make_unique<message_filters::Synchronizer<Exact>>(Exact(q), *colour_sub_,
@@ -60,129 +73,79 @@ void OdometryNodelet::Subscribe(ros::NodeHandle& nh) {
         Approximate(q), *colour_sub_, *depth_sub_, *info_sub_);
     approximate_sync_->registerCallback(&OdometryNodelet::OnImages, this);
   }
-  NODELET_INFO("dslam: waiting for %s, %s, %s (%s sync, queue %d)", colour_sub_->getTopic().c_str(),
-               depth_sub_->getTopic().c_str(), info_sub_->getTopic().c_str(),
-               config_.exact_sync ? "exact" : "approximate", q);
+  NODELET_INFO("dslam: waiting for %s (%s), %s (%s), %s (%s sync, queue %d)",
+               colour_sub_->getTopic().c_str(), config_.image_transport.c_str(),
+               depth_sub_->getTopic().c_str(), config_.depth_image_transport.c_str(),
+               info_sub_->getTopic().c_str(), config_.exact_sync ? "exact" : "approximate", q);
+}
+
+void OdometryNodelet::WatchInputs(ros::NodeHandle& nh) {
+  watchdog_ = std::make_unique<InputWatchdog>(std::array<std::string, 3>{
+      colour_sub_->getTopic(), depth_sub_->getTopic(), info_sub_->getTopic()});
+  const auto count = [this](InputWatchdog::Input input) {
+    return [this, input](const auto& msg) {
+      const std::lock_guard<std::mutex> lock(watchdog_mutex_);
+      watchdog_->Arrived(input, msg->header.stamp.toSec());
+    };
+  };
+  colour_sub_->registerCallback(
+      std::function<void(const sensor_msgs::ImageConstPtr&)>(count(InputWatchdog::kColour)));
+  depth_sub_->registerCallback(
+      std::function<void(const sensor_msgs::ImageConstPtr&)>(count(InputWatchdog::kDepth)));
+  info_sub_->registerCallback(
+      std::function<void(const sensor_msgs::CameraInfoConstPtr&)>(count(InputWatchdog::kInfo)));
+  watchdog_timer_ = nh.createWallTimer(ros::WallDuration(config_.input_timeout_s),
+                                       [this](const ros::WallTimerEvent&) {
+                                         std::string warning;
+                                         {
+                                           const std::lock_guard<std::mutex> lock(watchdog_mutex_);
+                                           warning = watchdog_->Check();
+                                         }
+                                         if (!warning.empty())
+                                           NODELET_WARN("dslam: %s", warning.c_str());
+                                       });
 }
 
 void OdometryNodelet::OnImages(const sensor_msgs::ImageConstPtr& colour,
                                const sensor_msgs::ImageConstPtr& depth,
                                const sensor_msgs::CameraInfoConstPtr& info) {
   ++received_;
+  {
+    const std::lock_guard<std::mutex> lock(watchdog_mutex_);
+    watchdog_->Synchronized();
+  }
   if (slot_.Put(Input{colour, depth, info, ros::WallTime::now()})) {
     NODELET_WARN_THROTTLE(5.0, "dslam: processing slower than input: %lu frames dropped so far",
                           static_cast<unsigned long>(slot_.dropped()));
   }
 }
 
-void OdometryNodelet::WorkerLoop() {
-  while (std::optional<Input> input = slot_.Take()) {
-    try {
-      Process(*input);
-    } catch (const std::exception& e) {
-      ++rejected_;
-      NODELET_ERROR_THROTTLE(1.0, "dslam: frame skipped: %s", e.what());
-    }
-  }
-}
-
-bool OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
-  try {
-    frame->stamp_s = input.colour->header.stamp.toSec();
-    frame->colour = ColourFromImage(*input.colour);
-    frame->depth_m = DepthFromImage(*input.depth);
-    frame->camera = yaml_camera_ ? yaml_camera_ : CameraFromInfo(*input.info);
-  } catch (const std::exception& e) {
-    NODELET_ERROR_THROTTLE(1.0, "dslam: bad input, frame skipped: %s", e.what());
-    return false;
-  }
-  const std::string problem = frame->Check();
-  if (!problem.empty()) {
-    NODELET_ERROR_THROTTLE(1.0, "dslam: bad input, frame skipped: %s (colour %ux%u, depth %ux%u)",
-                           problem.c_str(), input.colour->width, input.colour->height,
-                           input.depth->width, input.depth->height);
-    return false;
-  }
-  return true;
-}
-
-void OdometryNodelet::Process(const Input& input) {
-  RgbdFrame frame;
-  if (!ToFrame(input, &frame)) {
-    ++rejected_;
-    return;
-  }
-  if (reset_requested_.exchange(false)) {
-    slam_->Reset();
-    publisher_->ClearPath();
-  }
-  const FrameResult result = slam_->ProcessFrame(frame);
-  ++processed_;
-  if (result.reset) {
-    NODELET_WARN("dslam: odometry reset: %s", result.message.c_str());
-    std::lock_guard<std::mutex> lock(trajectory_mutex_);
-    trajectory_.clear();
-  }
-  if (result.has_pose) {
-    std::lock_guard<std::mutex> lock(trajectory_mutex_);
-    trajectory_.push_back({result.stamp_s, result.T_world_camera});
-  }
-  std_msgs::Header header = input.colour->header;
-  header.frame_id =
-      NormaliseFrameId(config_.camera_frame.empty() ? header.frame_id : config_.camera_frame);
-  const Eigen::Isometry3d& T_base_camera = CameraMount(header.frame_id, header.stamp);
-  const FrameCounters counters{received_.load(), processed_.load(), slot_.dropped(),
-                               rejected_.load()};
-  const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
-  publisher_->Publish(result, frame, header, T_base_camera, counters, latency_ms);
-}
-
-const Eigen::Isometry3d& OdometryNodelet::CameraMount(const std::string& camera_frame,
-                                                      const ros::Time& stamp) {
-  if (T_base_camera_) return *T_base_camera_;
-  std::string error;
-  if (!camera_frame.empty() &&
-      tf_buffer_->canTransform(config_.base_frame, camera_frame, ros::Time(0),
-                               ros::Duration(config_.tf_wait_s), &error)) {
-    T_base_camera_ = tf2::transformToEigen(
-        tf_buffer_->lookupTransform(config_.base_frame, camera_frame, ros::Time(0)));
-    NODELET_INFO("dslam: camera mount %s <- %s from TF", config_.base_frame.c_str(),
-                 camera_frame.c_str());
-    return *T_base_camera_;
-  }
-  T_base_camera_ = DefaultBaseFromOptical();
-  NODELET_INFO("dslam: no TF %s <- %s; using the default mount (optical z = base x)%s",
-               config_.base_frame.c_str(), camera_frame.c_str(),
-               config_.publish_tf ? " and publishing it" : "");
-  if (config_.publish_tf && !camera_frame.empty()) {
-    geometry_msgs::TransformStamped tf = tf2::eigenToTransform(*T_base_camera_);
-    tf.header.stamp = stamp;
-    tf.header.frame_id = config_.base_frame;
-    tf.child_frame_id = camera_frame;
-    static_broadcaster_->sendTransform(tf);
-  }
-  return *T_base_camera_;
-}
-
 bool OdometryNodelet::OnReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
-  reset_requested_ = true;
-  {
-    std::lock_guard<std::mutex> lock(trajectory_mutex_);
-    trajectory_.clear();
-  }
+  reset_requested_ = true;  // the worker resets before its next frame: no frame is in between
   res.success = true;
-  res.message = "odometry resets before the next frame";
+  res.message =
+      "odometry resets before the next frame and re-initialises at the last pose (odom stays "
+      "continuous)";
   return true;
 }
 
 bool OdometryNodelet::OnSaveTrajectory(dslam::SaveTrajectory::Request& req,
                                        dslam::SaveTrajectory::Response& res) {
-  std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  TrajectorySnapshot snapshot;
+  int segments = 0;
   try {
-    WriteTumTrajectory(req.path, trajectory_);
+    {
+      const std::lock_guard<std::mutex> lock(trajectory_mutex_);  // the worker waits only here
+      snapshot = recorder_->Snapshot();
+      segments = recorder_->num_segments();
+    }
+    res.poses = static_cast<int>(WriteTrajectorySnapshot(snapshot, req.path));
     res.success = true;
-    res.poses = static_cast<int>(trajectory_.size());
-    res.message = "wrote " + std::to_string(trajectory_.size()) + " poses to " + req.path;
+    res.message = "wrote " + std::to_string(res.poses) + " poses to " + req.path;
+    if (segments > 1) {
+      res.message += " (current segment; " + std::to_string(segments - 1) +
+                     " earlier segment(s) beside it as " + SegmentPath(req.path, 1) + ", ...)";
+    }
   } catch (const std::exception& e) {
     res.success = false;
     res.message = e.what();

@@ -1,6 +1,6 @@
 // dslam_replay: publishes the frames of a TUM-layout folder (dslam_synth output, TUM RGB-D) at a
 // fixed rate, looping over them, with stamps start + k / rate that keep increasing across loops
-// (a long-run input for the odometry node; scripts/long_run). Every message is converted once at
+// (a long-run input for the odometry node; scripts/long_run.py). Every message is converted once at
 // start; a publish only sets the header and serialises.
 //   dslam_replay --dataset FOLDER [--rate 30] [--duration S] [--depth 32FC1|16UC1]
 //                [--frame-id camera_rgb_optical_frame] [--wait-subscribers 30] [--max-frames N]

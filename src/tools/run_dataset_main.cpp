@@ -263,9 +263,7 @@ int Run(const Args& args) {
   if (!args.backend.empty()) config.backend.enabled = args.backend == "on";
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
   dslam::Slam slam(config,
-                   args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous,
-                   args.refined_trajectory.empty() ? dslam::RefinedPosesRecording::kOff
-                                                   : dslam::RefinedPosesRecording::kOn);
+                   args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous);
   Outputs out;
   OpenOutputs(args, &out);
   FeedFrames(args, dataset, &slam, &out);

@@ -72,6 +72,29 @@ int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
   return removed;
 }
 
+Map Map::WindowCopy() const {
+  Map copy;
+  copy.keyframes_ = keyframes_;
+  copy.next_point_id_ = next_point_id_;
+  copy.next_keyframe_id_ = next_keyframe_id_;
+  const auto add = [&](PointId id) {
+    const auto it = points_.find(id);
+    if (it != points_.end()) copy.points_.emplace(id, it->second);
+  };
+  for (const KeyFrame& keyframe : keyframes_) {
+    for (PointId id : keyframe.points) add(id);
+    for (const auto& entry : keyframe.measurements.by_point) add(entry.first);
+  }
+  return copy;
+}
+
+KeyFrame* Map::FindKeyFrame(int id) {
+  for (KeyFrame& keyframe : keyframes_) {
+    if (keyframe.id == id) return &keyframe;
+  }
+  return nullptr;
+}
+
 void Map::Clear() {
   points_.clear();
   keyframes_.clear();

@@ -18,9 +18,9 @@ void ConstantVelocityModel::Update(double stamp_s, const Eigen::Isometry3d& T_wo
   has_pose_ = true;
 }
 
-Eigen::Isometry3d ConstantVelocityModel::Predict(double stamp_s) const {
-  if (!has_velocity_) return T_world_last_;
-  const double dt = std::clamp(stamp_s - last_stamp_s_, 0.0, 1.0);
+Eigen::Isometry3d ConstantVelocityModel::Predict(double stamp_s, double max_gap_s) const {
+  if (!has_velocity_ || IsGap(stamp_s, max_gap_s)) return T_world_last_;
+  const double dt = std::max(stamp_s - last_stamp_s_, 0.0);
   Eigen::Isometry3d T_last_next = Eigen::Isometry3d::Identity();
   const Eigen::Vector3d rotation = rotation_rate_ * dt;
   if (rotation.norm() > 1e-12) {

@@ -1,6 +1,7 @@
 #include "dslam/tracking/odometry.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
@@ -9,19 +10,25 @@ namespace dslam {
 
 Odometry::Odometry(const Config& config) : config_(config) { config_.Validate(); }
 
-void Odometry::Reset() {
+void Odometry::Reset(ResetMode mode) {
   map_.Clear();
-  motion_.Reset();
+  if (mode == ResetMode::kNewWorld) {
+    motion_.Reset();
+    have_stamp_ = false;
+  } else {
+    motion_.ForgetVelocity();
+  }
   previous_ = FrameMeasurements();
   last_tracked_.clear();
-  initialised_ = have_stamp_ = false;
+  initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
 
 // The paper's front end (Sec. V), one frame.
-FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
+FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
   const std::string problem = frame.Check();
   if (!problem.empty()) throw std::invalid_argument("dslam: bad frame: " + problem);
+  request_ = request;
   Stopwatch total, stage;
   FrameResult result;
   result.reset = BeginFrame(frame, &result);
@@ -32,11 +39,21 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
   current.features = ExtractFeatures(frame, config_.features, config_.depth_noise);
   current.feature_taken.assign(current.features.features.size(), false);
   result.times.features_ms = stage.Restart();
+  const int num_features = static_cast<int>(current.features.features.size());
+  if (num_features < config_.tracking.min_static_inliers) {
+    // No pose can reach min_static_inliers inliers; say why instead of "too few pose inliers".
+    const std::string why = "too few features (" + std::to_string(num_features) +
+                            " ORB keypoints: black, saturated or textureless image?)";
+    return Lost(&current, std::move(result), why.c_str());
+  }
   if (!initialised_) return Initialise(&current, std::move(result));
 
   // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
-  const Eigen::Isometry3d T_camera_world_predicted = motion_.Predict(frame.stamp_s).inverse();
-  MatchLocalMapPoints(&current, T_camera_world_predicted, lost_frames_ > 0);
+  const double max_gap_s = config_.tracking.max_prediction_gap_s;
+  const Eigen::Isometry3d T_camera_world_predicted =
+      motion_.Predict(frame.stamp_s, max_gap_s).inverse();
+  const bool gap = motion_.IsGap(frame.stamp_s, max_gap_s);
+  MatchLocalMapPoints(&current, T_camera_world_predicted, lost_frames_ > 0 || gap);
   result.times.matching_ms = stage.Restart();
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
@@ -76,7 +93,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame) {
 bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
   bool reset = false;
   if (have_stamp_ && frame.stamp_s < last_stamp_s_) {
-    Reset();
+    Reset(ResetMode::kNewWorld);
     reset = true;
     result->message = "time went backwards: reset";
   }

@@ -231,14 +231,25 @@ void Odometry::Summarise(const Current& current, FrameResult* result) const {
     if (point == nullptr) continue;
     (point->marked ? counts.static_points : counts.dynamic_points)++;
     if (point->IsCandidate()) ++counts.candidate_points;
-    ObservedPoint observed;
-    observed.id = match.id;
-    observed.uv_raw = current.features.features[match.feature].uv_raw;
-    observed.p_world = point->p_world;
-    observed.is_static = point->marked;
-    observed.is_candidate = point->IsCandidate();
-    result->points.push_back(observed);
   }
+  AddViews(current, result);
+}
+
+void Odometry::AddViews(const Current& current, FrameResult* result) const {
+  if (request_.points) {
+    for (const PointMatch& match : current.matches) {
+      const MapPoint* point = map_.Find(match.id);
+      if (point == nullptr) continue;
+      ObservedPoint observed;
+      observed.id = match.id;
+      observed.uv_raw = current.features.features[match.feature].uv_raw;
+      observed.p_world = point->p_world;
+      observed.is_static = point->marked;
+      observed.is_candidate = point->IsCandidate();
+      result->points.push_back(observed);
+    }
+  }
+  if (!request_.edges) return;
   const StaticPointsResult& spd = current.static_points.result;
   for (size_t e = 0; e < spd.edges.size(); ++e) {
     const GraphEdge& edge = spd.edges[e];

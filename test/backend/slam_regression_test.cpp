@@ -21,7 +21,7 @@ struct RunResult {
 RunResult RunSlam(const Rendered& rendered, bool backend) {
   Config config;
   config.backend.enabled = backend;
-  Slam slam(config, BackEndMode::kSynchronous, RefinedPosesRecording::kOn);
+  Slam slam(config);
   Trajectory estimated;
   RunResult out;
   for (const RgbdFrame& frame : rendered.frames) {

@@ -3,7 +3,6 @@
 // destruction with keyframes queued. Also run under ThreadSanitizer by scripts/sanitize.sh.
 #include <chrono>
 #include <future>
-#include <stdexcept>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -38,7 +37,7 @@ struct RunResult {
 
 // Feeds every frame, `gap` apart (a camera's frame interval), then collects the runs left over.
 RunResult RunSequence(BackEndMode mode, std::chrono::milliseconds gap) {
-  Slam slam(BackEndOn(), mode, RefinedPosesRecording::kOn);
+  Slam slam(BackEndOn(), mode);
   Trajectory estimated;
   RunResult out;
   for (const RgbdFrame& frame : Sequence().frames) {
@@ -136,7 +135,7 @@ TEST(SlamThreads, ResetDropsQueuedKeyFrames) {
   slam.HoldBackEnd(true);
   int next = 0;
   EXPECT_EQ(FeedKeyFrames(&slam, 3, &next).backend_thread.backlog, 3);
-  slam.Reset();
+  slam.Reset(ResetMode::kNewWorld);
   slam.WaitForBackEnd();
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());  // nothing ran: the queue was dropped
   const FrameResult first = slam.ProcessFrame(Sequence().frames[next]);
@@ -152,7 +151,7 @@ TEST(SlamThreads, ResetRightAfterKeyFramesNeverReportsOldRuns) {
   int next = 0;
   for (int round = 0; round < 3; ++round) {
     FeedKeyFrames(&slam, 2, &next);  // the back end may be running, queued or done
-    slam.Reset();
+    slam.Reset(ResetMode::kNewWorld);
     const FrameResult first = slam.ProcessFrame(Sequence().frames[next++]);
     EXPECT_EQ(first.state, TrackingState::kInitialised) << "round " << round;
     EXPECT_FALSE(first.backend_thread.delivered) << "round " << round;
@@ -199,25 +198,6 @@ TEST(SlamThreads, SynchronousModeReportsEachRunWithItsKeyFrame) {
   EXPECT_EQ(r.backend_thread.backlog, 0);
   slam.WaitForBackEnd();
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());
-}
-
-// The refined trajectory is kept only when asked for (a node running for hours must not keep a
-// record of every frame): off, RefinedPoses() throws; on, it has one pose per tracked frame.
-TEST(SlamRefinedPoses, RecordedOnlyWhenAsked) {
-  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
-    Slam off(BackEndOn(), mode);
-    Slam on(BackEndOn(), mode, RefinedPosesRecording::kOn);
-    size_t with_pose = 0;
-    for (int i = 0; i < 12; ++i) {
-      off.ProcessFrame(Sequence().frames[i]);
-      with_pose += on.ProcessFrame(Sequence().frames[i]).has_pose;
-    }
-    off.WaitForBackEnd();
-    on.WaitForBackEnd();
-    EXPECT_THROW(off.RefinedPoses(), std::logic_error);
-    EXPECT_EQ(with_pose, 12u);
-    EXPECT_EQ(on.RefinedPoses().size(), with_pose);
-  }
 }
 
 }  // namespace

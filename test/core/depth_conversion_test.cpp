@@ -39,6 +39,7 @@ TEST(DepthConversion, MetresCleansInvalidValues) {
   for (int i = 0; i < 4; ++i) EXPECT_EQ(clean.at<float>(0, i), 0.0f) << i;
   EXPECT_FLOAT_EQ(clean.at<float>(0, 4), 1.25f);
   EXPECT_EQ(CountValidDepth(clean), 1);
+  EXPECT_EQ(CountValidDepth(m), 1);  // uncleaned: NaN, inf, negative and 0 are not valid
 }
 
 TEST(DepthConversion, RejectsWrongEncodings) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""rostest: a stand-in for openni2_launch publishes camera/rgb/image_rect_color (rgb8),
-camera/depth_registered/image_raw (16UC1 millimetres) and camera/rgb/camera_info; checks that
-openni2.launch's remapping delivers them to dslam (status and odometry arrive, frames tracked)."""
+"""rostest: a stand-in for openni2_launch publishes camera/rgb/image_raw (rgb8),
+camera/depth_registered/image_raw (16UC1 millimetres) and camera/rgb/camera_info (the raw pair
+openni2.launch subscribes to by default); checks that openni2.launch's remapping delivers them to
+dslam (status and odometry arrive, frames tracked)."""
 
 import threading
 import unittest
@@ -62,7 +63,7 @@ class OpenNI2RemapTest(unittest.TestCase):
 
         rospy.Subscriber("/dslam/status", FrameStatus, keep("status"))
         rospy.Subscriber("/dslam/odom", Odometry, keep("odom"))
-        pubs = [rospy.Publisher("/camera/rgb/image_rect_color", Image, queue_size=5),
+        pubs = [rospy.Publisher("/camera/rgb/image_raw", Image, queue_size=5),
                 rospy.Publisher("/camera/depth_registered/image_raw", Image, queue_size=5),
                 rospy.Publisher("/camera/rgb/camera_info", CameraInfo, queue_size=5)]
         colour, depth = textured_scene()

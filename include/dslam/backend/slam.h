@@ -10,15 +10,18 @@
 //
 // Locking policy (threaded mode; synchronous mode takes the same lock, uncontended). One mutex,
 // the map mutex, guards all mutable state of Slam: the Odometry (its map, motion model and frame
-// bookkeeping), the RefinedTrajectory and the back-end queue (pending keyframes, completed runs,
-// the hold and stop flags, a stored back-end error). While a thread holds it, no local-mapping run
-// is in progress on another thread.
+// bookkeeping), the RefinedTrajectory and the back-end queue (pending keyframes, the run in
+// progress flag, completed runs, the hold and stop flags, the reset generation, a stored
+// back-end error).
 // - The tracking thread (the caller of ProcessFrame) holds it for Odometry::ProcessFrame and the
 //   bookkeeping after it (refined trajectory, queueing the keyframe, handing over a completed
 //   run), then releases it before returning.
-// - The back-end thread holds it for the whole of one RunLocalMapping (which changes the map's
-//   keyframe poses and points, the motion model through AdoptNewestKeyFramePose, and the refined
-//   trajectory) and sleeps on a condition variable of the same mutex in between.
+// - The back-end thread holds it only to copy the keyframe window into a LocalMappingJob and,
+//   after the run, to apply the job's results to the map (keyframe poses, moved points, lost
+//   marks), correct the motion model and the refined trajectory. It runs the job (static point
+//   determination and local BA on the copy, the expensive part) without the lock: the job's copy
+//   is the back-end thread's alone. A Reset while a job runs increments the generation; the job's
+//   results are then dropped.
 // - Every other public member (Reset, WaitForBackEnd, TakeUnreportedRuns, HoldBackEnd,
 //   RefinedPoses, MapSnapshot) takes it; getters return copies, never references into the map.
 //   config() is immutable.
@@ -32,6 +35,7 @@
 #include <vector>
 
 #include "dslam/backend/local_bundle_adjustment.h"
+#include "dslam/backend/local_mapping_job.h"
 #include "dslam/backend/refined_trajectory.h"
 #include "dslam/core/config.h"
 #include "dslam/core/rgbd_frame.h"
@@ -46,12 +50,11 @@ enum class BackEndMode {
   kThreaded,     ///< on Slam's back-end thread, beside the caller's tracking thread
 };
 
-/// Whether Slam records every tracked frame for RefinedPoses(). Recording keeps 144 bytes per
-/// tracked frame and ~160 per keyframe (measured with heaptrack) for the life of the Slam, which
-/// a node running for hours must not; the causal poses of FrameResult need none of it.
-enum class RefinedPosesRecording {
-  kOff,  ///< RefinedPoses() throws; memory does not grow with the frames
-  kOn,   ///< for offline runs that write the refined trajectory (dslam_run_dataset)
+/// Whether Slam keeps every tracked frame for RefinedPoses() (memory grows by one entry per
+/// tracked frame and one per keyframe: offline runs want it, a node running for hours does not).
+enum class RefinedPoseRecording {
+  kOn,   ///< RefinedPoses() returns every tracked frame
+  kOff,  ///< RefinedPoses() returns nothing; memory stays flat
 };
 
 /// Front end and back end over one map. ProcessFrame, Reset, WaitForBackEnd and
@@ -62,7 +65,7 @@ class Slam {
   /// Starts the back-end thread in BackEndMode::kThreaded. Throws ConfigError when `config` is
   /// invalid.
   explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous,
-                RefinedPosesRecording refined = RefinedPosesRecording::kOff);
+                RefinedPoseRecording refined = RefinedPoseRecording::kOn);
   /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued.
   ~Slam();
   Slam(const Slam&) = delete;
@@ -73,13 +76,17 @@ class Slam {
   /// (threaded). FrameResult::backend is, synchronous: this keyframe's run; threaded: the oldest
   /// completed run not yet reported, flagged by FrameResult::backend_thread.delivered (each run is
   /// reported once; TakeUnreportedRuns returns the rest). The pose in the result is the one
-  /// estimated at this frame (causal). Sets times.tracking_ms. Throws std::invalid_argument when
-  /// frame.Check() fails, and rethrows an exception of the back-end thread's last run.
-  FrameResult ProcessFrame(const RgbdFrame& frame);
+  /// estimated at this frame (causal). Sets times.tracking_ms. `request` chooses the per-frame
+  /// lists (FrameRequest). When time went backwards the odometry starts a new world
+  /// (FrameResult::reset) and queued keyframes and unreported runs of the old one are dropped.
+  /// Throws std::invalid_argument when frame.Check() fails, and rethrows an exception of the
+  /// back-end thread's last run.
+  FrameResult ProcessFrame(const RgbdFrame& frame, const FrameRequest& request = {});
 
-  /// Waits for a back-end run in progress, drops queued keyframes and unreported runs, then
-  /// forgets the map and the motion model; the next frame initialises at the world origin.
-  void Reset();
+  /// Drops queued keyframes, unreported runs and the results of a run in progress (which goes on
+  /// with its own copy of the window), then resets the odometry (Odometry::Reset): the next frame
+  /// initialises at the last tracked pose (kKeepPose) or at the world origin (kNewWorld).
+  void Reset(ResetMode mode);
 
   /// Threaded: blocks until no keyframe is queued and no run is in progress (releases a hold
   /// first). Synchronous: returns at once. Rethrows an exception of the back-end thread.
@@ -97,7 +104,6 @@ class Slam {
 
   /// Every tracked frame re-expressed on its reference keyframe as refined by the back end so
   /// far (RefinedTrajectory, a copy); the same poses as the causal ones with the back end off.
-  /// Throws std::logic_error unless constructed with RefinedPosesRecording::kOn.
   Trajectory RefinedPoses() const;
 
   /// A copy of the map (keyframe window and points) between two runs of either thread.
@@ -109,23 +115,29 @@ class Slam {
  private:
   using Lock = std::unique_lock<std::mutex>;
 
-  /// Local BA on the window the newest keyframe completes; the map mutex is held.
+  /// Synchronous local mapping on the window the newest keyframe completes (lock held): the
+  /// same job as the back-end thread's, copied, run and applied at once.
   BackEndStatus RunLocalMapping();
+  /// Applies a finished job to the live map and corrects tracking (lock held).
+  BackEndStatus FinishLocalMapping(const LocalMappingJob& job);
   /// The back-end thread: waits for queued keyframes, runs local mapping once for all of them.
   void BackEndLoop();
   /// Threaded bookkeeping after the front end (queue a keyframe, hand over a run); lock held.
   void ExchangeWithBackEnd(FrameResult* result);
-  void RethrowBackEndError();                         ///< lock held
+  void RethrowBackEndError();  ///< lock held
+  void DropBackEndWork();      ///< forgets queued keyframes and unreported runs; lock held
   const Map& map() const { return odometry_.map(); }  ///< lock held
 
   const BackEndMode mode_;
-  const RefinedPosesRecording refined_recording_;
+  const RefinedPoseRecording refined_recording_;
   mutable std::mutex map_mutex_;  ///< the one lock: guards every member below (policy above)
   Odometry odometry_;
-  RefinedTrajectory refined_;     ///< empty unless refined_recording_ is kOn
+  RefinedTrajectory refined_;
   std::condition_variable work_;  ///< back-end thread: keyframes queued, hold released or stop
   std::condition_variable idle_;  ///< WaitForBackEnd: a run finished
   int pending_ = 0;               ///< [keyframes] queued and not started (the backlog)
+  bool running_ = false;          ///< the back-end thread works on a job (without the lock)
+  uint64_t generation_ = 0;       ///< incremented by each reset: older jobs are dropped
   bool held_ = false;             ///< HoldBackEnd(true)
   bool stop_ = false;             ///< the destructor asked the thread to end
   std::deque<BackEndStatus> completed_;  ///< runs not yet reported, oldest first

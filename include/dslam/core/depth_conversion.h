@@ -23,7 +23,7 @@ cv::Mat DepthFromMetres(const cv::Mat& depth_m);
 /// Throws std::runtime_error when the file cannot be read or is not 16-bit single channel.
 cv::Mat ReadDepthPng(const std::string& path, double units_per_metre);
 
-/// Number of pixels with a valid (> 0) depth.
+/// Number of pixels with a valid depth (finite and > 0).
 int CountValidDepth(const cv::Mat& depth_m);
 
 }  // namespace dslam

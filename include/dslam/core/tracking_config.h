@@ -35,6 +35,7 @@ struct TrackingConfig {
   int isolated_frames_to_unmark = 3;
   int remark_frames = 15;
   int lost_frames_before_reset = 10;
+  double max_prediction_gap_s = 1.0;
   std::string robust_pose_points = "marked_first";
 
   /// Visits every field in documentation order.
@@ -136,6 +137,12 @@ struct TrackingConfig {
     v(Field("lost_frames_before_reset", "frames", 1, 100000,
             "consecutive lost frames before re-initialising at the last good pose"),
       s.lost_frames_before_reset);
+    // After a longer gap (dropped frames, a paused driver) the last velocity says nothing about
+    // where the camera is now: predict the last pose and search wide instead of extrapolating.
+    v(Field("max_prediction_gap_s", "s", 0.001, 3600.0,
+            "longest time since the last tracked frame over which the motion model extrapolates; "
+            "longer: last pose and wide search"),
+      s.max_prediction_gap_s);
     // The RANSAC fallback when static points give too few inliers: "marked" lets only points not
     // known to move decide the pose (a crowd filling the view cannot win the vote); "all" samples
     // every match; "marked_first" tries the marked points, then all (measured in BENCHMARKS.md).

@@ -19,17 +19,40 @@ namespace ros_layer {
 /// Frame id without leading slashes (TUM bags use "/openni_rgb_optical_frame").
 std::string NormaliseFrameId(const std::string& frame_id);
 
-/// rgb8 / bgr8 / mono8 image -> CV_8UC3 BGR or CV_8UC1 grey (a copy).
-/// Throws std::invalid_argument naming the encoding otherwise.
+/// Colour encodings ColourFromImage() accepts: rgb8, bgr8, rgba8, bgra8 (alpha dropped), mono8.
+/// Others (bayer_*, yuv422, 16-bit colour, ...) are rejected: subscribe to a debayered topic
+/// (image_proc's image_color / image_rect_color) instead.
+/// A colour image -> CV_8UC3 BGR or CV_8UC1 grey (a copy). Throws std::invalid_argument whose
+/// text begins "colour image" and names the problem: an unsupported encoding (listing the
+/// accepted ones), a zero size, a step shorter than a row or data of another length than
+/// step * height (a truncated message is never read out of bounds).
 cv::Mat ColourFromImage(const sensor_msgs::Image& image);
 
-/// 16UC1 (millimetres) / 32FC1 (metres) depth -> CV_32FC1 metres, 0 = no measurement (NaN,
-/// infinite, zero and negative values become 0). Throws std::invalid_argument otherwise.
+/// A depth image -> CV_32FC1 metres, 0 = no measurement. Accepted encodings: 16UC1 and mono16
+/// (millimetres, 0 = none) and 32FC1 (metres; NaN, infinite, zero and negative values become 0),
+/// either byte order (is_bigendian = 1 is byte-swapped). Throws std::invalid_argument whose text
+/// begins "depth image" on another encoding, a zero size or inconsistent step / data size.
 cv::Mat DepthFromImage(const sensor_msgs::Image& image);
 
-/// Pinhole camera from K and plumb_bob D (an empty D or all zeros: no distortion).
-/// Throws std::invalid_argument on a zero K, a zero size or another distortion model.
-std::shared_ptr<const PinholeCamera> CameraFromInfo(const sensor_msgs::CameraInfo& info);
+/// Which intrinsics of a camera_info describe an image (image_pipeline's convention).
+enum class ImageGeometry {
+  kRaw,        ///< image_raw / image_color: K and the distortion D
+  kRectified,  ///< image_rect*: the projection P (fx = P[0], fy = P[5], cx = P[2], cy = P[6]), no D
+};
+
+/// Pinhole camera of the colour image `colour` (only its width and height are read) from
+/// `info`. kRaw: K with the distortion of `distortion_model` / D; an empty D or one of zeros is
+/// no distortion; plumb_bob needs 5 coefficients, rational_polynomial 8 of which k4..k6 must be 0,
+/// other models (equidistant, ...) are rejected unless D is all zeros. kRectified: P, D ignored;
+/// P[3] (Tx) or P[7] (Ty) non-zero (a right stereo camera) is rejected. Throws
+/// std::invalid_argument whose text begins "camera_info" and names the field, e.g.
+/// "camera_info K[0] (fx) is NaN", on: a zero size, a size other than the colour image's,
+/// binning or a region of interest, a NaN / infinite / non-positive focal length, a NaN /
+/// infinite centre or one outside the image, a skew (K[1] or P[1]) other than 0, a NaN /
+/// infinite D coefficient, a D length wrong for its model or an unsupported model.
+std::shared_ptr<const PinholeCamera> CameraFromInfo(const sensor_msgs::CameraInfo& info,
+                                                    const sensor_msgs::Image& colour,
+                                                    ImageGeometry geometry);
 
 /// Default mount of the camera's optical frame (x right, y down, z forward) on the base frame
 /// (REP 103: x forward, y left, z up), at the base origin: T_base_camera maps optical-frame

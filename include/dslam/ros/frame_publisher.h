@@ -1,9 +1,12 @@
 #pragma once
-// Publishes the odometry's per-frame outputs: nav_msgs/Odometry `odom`, nav_msgs/Path `path`,
-// TF odom -> base, dslam/FrameStatus `status`, and - only when subscribed - the PointClouds
-// `static_points` / `dynamic_points`, MarkerArray `graph_edges` and Image `features`.
+// Publishes the odometry's per-frame outputs: nav_msgs/Odometry `odom`, nav_msgs/Path `path` (a
+// bounded ring, at a bounded rate), TF odom -> base, dslam/FrameStatus `status`, and - only when
+// subscribed - the PointClouds `static_points` / `dynamic_points`, MarkerArray `graph_edges` and
+// Image `features`.
 
 #include <cstdint>
+#include <deque>
+#include <string>
 
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
@@ -39,14 +42,28 @@ class FramePublisher {
                const Eigen::Isometry3d& T_base_camera, const FrameCounters& counters,
                double latency_ms);
 
-  /// Empties the published path (after a reset).
-  void ClearPath() { path_.poses.clear(); }
+  /// Publishes the status of a set that never reached the odometry (bad input, a skipped
+  /// stamp): state "rejected", no pose, `problem` as the message.
+  void PublishRejected(const std::string& problem, const std_msgs::Header& header,
+                       const FrameCounters& counters, double latency_ms);
+
+  /// Empties the path (the odometry started a new run at the origin).
+  void ClearPath() { path_.clear(); }
+
+  /// The odometry's per-frame lists someone will see (FrameRequest): points for the clouds and
+  /// the feature image, edges for the graph markers.
+  bool WantsPoints() const;
+  bool WantsEdges() const;
 
  private:
   void PublishPose(const FrameResult& result, const std_msgs::Header& odom_header,
                    const Eigen::Isometry3d& T_base_camera);
-  void PublishStatus(const FrameResult& result, const std_msgs::Header& odom_header,
-                     const FrameCounters& counters, double latency_ms);
+  /// Appends to the ring of path poses; publishes it at most at path_rate_hz when subscribed.
+  void UpdatePath(const geometry_msgs::PoseStamped& pose);
+  /// `state`: FrameStatus.state (the tracking state, or "rejected").
+  void PublishStatus(const FrameResult& result, const std::string& state,
+                     const std_msgs::Header& odom_header, const FrameCounters& counters,
+                     double latency_ms);
   void PublishVisuals(const FrameResult& result, const RgbdFrame& frame,
                       const std_msgs::Header& header, const std_msgs::Header& odom_header,
                       const Eigen::Isometry3d& T_base_camera);
@@ -55,7 +72,8 @@ class FramePublisher {
   ros::Publisher odom_pub_, path_pub_, status_pub_;
   ros::Publisher static_pub_, dynamic_pub_, edges_pub_, features_pub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  nav_msgs::Path path_;
+  std::deque<geometry_msgs::PoseStamped> path_;  ///< at most path_max_poses, oldest first
+  ros::WallTime path_published_;                 ///< last publication of the path
 };
 
 }  // namespace ros_layer

@@ -20,7 +20,13 @@ struct NodeConfig {
   bool exact_sync = false;
   int queue_size = 10;
   std::string camera_yaml = "";
+  bool rectified_input = false;
   int path_max_poses = 10000;
+  double path_rate_hz = 2.0;
+  std::string trajectory_stream = "";
+  std::string image_transport = "raw";
+  std::string depth_image_transport = "raw";
+  double input_timeout_s = 5.0;
   double tf_wait_s = 0.0;
   bool backend_threads = true;
 
@@ -36,8 +42,28 @@ struct NodeConfig {
     v(Field("queue_size", "-", 1, 1000, "synchroniser queue length per input"), s.queue_size);
     v(Field("camera_yaml", "-", 0, 0, "camera.yaml with calibrated intrinsics; empty: camera_info"),
       s.camera_yaml);
-    v(Field("path_max_poses", "-", 1, 10000000, "poses kept in the path message"),
+    v(Flag("rectified_input",
+           "the colour and depth topics are rectified (image_rect*): intrinsics from camera_info "
+           "P, no distortion; false: raw images, K and D"),
+      s.rectified_input);
+    v(Field("path_max_poses", "-", 1, 10000000, "poses kept in the path message (a ring)"),
       s.path_max_poses);
+    v(Field("path_rate_hz", "Hz", 0.01, 1000.0,
+            "highest rate at which the path is published (each message carries the whole ring)"),
+      s.path_rate_hz);
+    v(Field("trajectory_stream", "-", 0, 0,
+            "file to which every tracked pose is appended as it goes (TUM format), keeping none "
+            "in memory; earlier segments beside it as <stem>.seg<N><ext>; empty: keep in memory"),
+      s.trajectory_stream);
+    v(Field("image_transport", "-", 0, 0,
+            "image_transport of the colour image (raw, compressed, ...)"),
+      s.image_transport);
+    v(Field("depth_image_transport", "-", 0, 0,
+            "image_transport of the depth image (raw, compressedDepth, ...)"),
+      s.depth_image_transport);
+    v(Field("input_timeout_s", "s", 0.1, 3600.0,
+            "warn when images arrive but no synchronized set was formed for this long"),
+      s.input_timeout_s);
     v(Field("tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at the first frame"),
       s.tf_wait_s);
     v(Flag("backend_threads",

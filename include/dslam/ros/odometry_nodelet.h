@@ -1,10 +1,16 @@
 #pragma once
-// dslam/OdometryNodelet: synchronizes colour, depth and camera_info (relative, remappable names
-// rgb/image, depth/image, rgb/camera_info), runs dslam::Slam on a worker thread fed by a
-// two-frame bounded queue (it absorbs the bursts of the ApproximateTime synchronizer): the front
-// end there, the back end on Slam's own thread (~backend_threads, the default) or after each
-// keyframe on the worker; and publishes through FramePublisher. Services: `reset`
-// (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
+// dslam/OdometryNodelet: synchronizes colour, depth (image_transport, transports by parameter) and
+// camera_info (relative, remappable names rgb/image, depth/image, rgb/camera_info), runs
+// dslam::Slam on a worker thread fed by a two-frame bounded queue (it absorbs the bursts of the
+// ApproximateTime synchronizer): the front end there, the back end on Slam's own thread
+// (~backend_threads, the default) or after each keyframe on the worker; and publishes through
+// FramePublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
+//
+// Threads and locks: the subscriber callbacks only queue input sets (LatestSlot) and count
+// arrivals (watchdog_mutex_); the worker thread alone uses slam_, publisher_, stamps_ and the
+// camera mount; the service callbacks set reset_requested_ (atomic, acted on by the worker before
+// its next frame) or take a snapshot of recorder_ under trajectory_mutex_ and write the files after
+// releasing it. The worker holds trajectory_mutex_ only to append a pose or start a segment.
 
 #include <atomic>
 #include <memory>
@@ -12,6 +18,8 @@
 #include <optional>
 #include <thread>
 
+#include <image_transport/image_transport.h>
+#include <image_transport/subscriber_filter.h>
 #include <message_filters/subscriber.h>
 #include <message_filters/sync_policies/approximate_time.h>
 #include <message_filters/sync_policies/exact_time.h>
@@ -27,8 +35,9 @@
 #include "dslam/SaveTrajectory.h"
 #include "dslam/backend/slam.h"
 #include "dslam/core/camera.h"
-#include "dslam/io/trajectory_io.h"
+#include "dslam/io/trajectory_recorder.h"
 #include "dslam/ros/frame_publisher.h"
+#include "dslam/ros/input_checks.h"
 #include "dslam/ros/latest_slot.h"
 #include "dslam/ros/node_config.h"
 
@@ -49,7 +58,6 @@ class OdometryNodelet : public nodelet::Nodelet {
     sensor_msgs::CameraInfoConstPtr info;
     ros::WallTime received;
   };
-  using ImageSub = message_filters::Subscriber<sensor_msgs::Image>;
   using InfoSub = message_filters::Subscriber<sensor_msgs::CameraInfo>;
   using Approximate =
       message_filters::sync_policies::ApproximateTime<sensor_msgs::Image, sensor_msgs::Image,
@@ -57,14 +65,26 @@ class OdometryNodelet : public nodelet::Nodelet {
   using Exact = message_filters::sync_policies::ExactTime<sensor_msgs::Image, sensor_msgs::Image,
                                                           sensor_msgs::CameraInfo>;
 
+  /// Reads and validates the parameters, starts the worker, subscribes. Throws
+  /// std::runtime_error naming the parameter when one is invalid: the nodelet is then not
+  /// loaded (`nodelet load` fails, dslam_odometry_node exits with status 1).
   void onInit() override;
   void Subscribe(ros::NodeHandle& nh);
+  void WatchInputs(ros::NodeHandle& nh);
   void OnImages(const sensor_msgs::ImageConstPtr& colour, const sensor_msgs::ImageConstPtr& depth,
                 const sensor_msgs::CameraInfoConstPtr& info);
   void WorkerLoop();
   void Process(const Input& input);
-  /// Converts the messages; logs a throttled error and returns false on bad input.
-  bool ToFrame(const Input& input, RgbdFrame* frame);
+  /// Checks stamps and frame ids, converts the messages. Returns the problem when the set must be
+  /// skipped (logged, counted, reported in `status`); warns about unusual but usable input.
+  std::string ToFrame(const Input& input, RgbdFrame* frame);
+  /// Resets the odometry when the service asked for it; returns whether it did.
+  bool ApplyRequestedReset();
+  /// Keeps the frame's pose for saving; `new_world`: the odometry started a new run at the
+  /// origin (time went backwards), so the pose begins a new trajectory segment.
+  void RecordPose(const FrameResult& result, bool new_world);
+  void Publish(const Input& input, const RgbdFrame& frame, const FrameResult& result);
+  FrameCounters Counters() const;
   /// The camera mount T_base_camera: from TF if available at the first frame, else the default.
   const Eigen::Isometry3d& CameraMount(const std::string& camera_frame, const ros::Time& stamp);
   bool OnReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -75,6 +95,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   // own back-end thread, stopped and joined when slam_ is destroyed, after worker_).
   std::unique_ptr<Slam> slam_;
   std::unique_ptr<FramePublisher> publisher_;  // used by the worker only
+  std::unique_ptr<StampCheck> stamps_;         // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;
 
@@ -82,11 +103,16 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
 
-  std::unique_ptr<ImageSub> colour_sub_, depth_sub_;
+  std::unique_ptr<image_transport::ImageTransport> transport_;
+  std::unique_ptr<image_transport::SubscriberFilter> colour_sub_, depth_sub_;
   std::unique_ptr<InfoSub> info_sub_;
   std::unique_ptr<message_filters::Synchronizer<Approximate>> approximate_sync_;
   std::unique_ptr<message_filters::Synchronizer<Exact>> exact_sync_;
   ros::ServiceServer reset_srv_, save_srv_;
+  ros::WallTimer watchdog_timer_;
+
+  std::mutex watchdog_mutex_;
+  std::unique_ptr<InputWatchdog> watchdog_;  // guarded by watchdog_mutex_
 
   LatestSlot<Input> slot_;
   std::thread worker_;
@@ -94,7 +120,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::atomic<bool> reset_requested_{false};
 
   std::mutex trajectory_mutex_;
-  Trajectory trajectory_;  // every tracked frame since the last reset, guarded
+  std::unique_ptr<TrajectoryRecorder> recorder_;  // every tracked pose, guarded
 };
 
 }  // namespace ros_layer

@@ -98,6 +98,14 @@ class Map {
   int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
            int static_seen_since_frame = -1);
 
+  /// A map of the keyframe window alone: the keyframes and every point they reference (in
+  /// `points` or `measurements`), with the same ids; for the back end to work on while tracking
+  /// goes on with this map.
+  Map WindowCopy() const;
+
+  /// The window keyframe with `id`, or nullptr when it left the window.
+  KeyFrame* FindKeyFrame(int id);
+
   size_t size() const { return points_.size(); }  ///< number of map points
   void Clear();                                   ///< removes every point and keyframe
 

@@ -12,8 +12,14 @@ class ConstantVelocityModel {
   void Update(double stamp_s, const Eigen::Isometry3d& T_world_camera);
 
   /// Pose predicted for `stamp_s` [s]: the last pose moved on by the last velocity, scaled to
-  /// the elapsed time (at most 1 s ahead). The last pose when fewer than two are known.
-  Eigen::Isometry3d Predict(double stamp_s) const;
+  /// the elapsed time. The last pose when fewer than two are known or when more than
+  /// `max_gap_s` [s] passed since the last one (IsGap).
+  Eigen::Isometry3d Predict(double stamp_s, double max_gap_s) const;
+
+  /// True when a pose is known and more than `max_gap_s` [s] passed since it.
+  bool IsGap(double stamp_s, double max_gap_s) const {
+    return has_pose_ && stamp_s - last_stamp_s_ > max_gap_s;
+  }
 
   /// Replaces the last pose by a refined estimate of it (e.g. after bundle adjustment); the
   /// velocity, in the camera frame, is kept.

@@ -15,6 +15,23 @@
 
 namespace dslam {
 
+/// What Odometry::Reset keeps of the odometry's world frame.
+enum class ResetMode {
+  /// The next frame initialises at the last tracked pose: the world frame continues (a `reset`
+  /// service keeps the ROS odom frame continuous, REP 105).
+  kKeepPose,
+  /// The next frame initialises at the world origin: a new run in a new world frame (time went
+  /// backwards, e.g. a bag played in a loop).
+  kNewWorld,
+};
+
+/// Which per-frame lists FrameResult carries (the counts are always filled). The lists cost time
+/// and memory on every frame; a caller that does not draw them asks for none.
+struct FrameRequest {
+  bool points = true;  ///< FrameResult::points (matched map points with their labels)
+  bool edges = true;   ///< FrameResult::edges (the front-end graph)
+};
+
 /// Processes RGB-D frames one at a time. Not thread-safe: call from one thread.
 class Odometry {
  public:
@@ -22,12 +39,14 @@ class Odometry {
   explicit Odometry(const Config& config);
 
   /// Runs the pipeline of the paper's front end on one frame (see ProcessFrame in odometry.cpp).
-  /// A frame older than the previous one (a bag played in a loop) resets the odometry first.
-  /// Throws std::invalid_argument when frame.Check() fails.
-  FrameResult ProcessFrame(const RgbdFrame& frame);
+  /// A frame older than the previous one (a bag played in a loop) first resets the odometry
+  /// into a new world (ResetMode::kNewWorld; FrameResult::reset and message say so). `request`
+  /// chooses the per-frame lists filled. Throws std::invalid_argument when frame.Check() fails.
+  FrameResult ProcessFrame(const RgbdFrame& frame, const FrameRequest& request = {});
 
-  /// Forgets the map and the motion model; the next frame initialises at the world origin.
-  void Reset();
+  /// Forgets the map and the velocity; the next frame initialises at the last tracked pose
+  /// (kKeepPose) or at the world origin (kNewWorld). Frame indices restart at 0.
+  void Reset(ResetMode mode);
 
   const Map& map() const { return map_; }  ///< the local map (for visualisation)
   /// The local map, for the back end to refine between frames (Slam); call
@@ -82,8 +101,11 @@ class Odometry {
                                    const std::vector<PointId>& created) const;
   FrameResult Lost(Current* current, FrameResult result, const char* why);
   void Summarise(const Current& current, FrameResult* result) const;
+  /// Fills FrameResult::points / edges as `request_` asks.
+  void AddViews(const Current& current, FrameResult* result) const;
 
   Config config_;
+  FrameRequest request_;  ///< of the frame being processed
   Map map_;
   ConstantVelocityModel motion_;
   FrameMeasurements previous_;         ///< measurements of the previous tracked frame

@@ -1,0 +1,143 @@
+// OdometryNodelet's worker thread: input checks and conversion, resets, the odometry, the
+// recorded trajectory and publication (the nodelet's set-up and services: odometry_nodelet.cpp).
+#include <tf2_eigen/tf2_eigen.h>
+
+#include "dslam/ros/conversions.h"
+#include "dslam/ros/odometry_nodelet.h"
+
+namespace dslam {
+namespace ros_layer {
+
+void OdometryNodelet::WorkerLoop() {
+  while (std::optional<Input> input = slot_.Take()) {
+    try {
+      Process(*input);
+    } catch (const std::exception& e) {
+      ++rejected_;
+      NODELET_ERROR_THROTTLE(1.0, "dslam: frame skipped: %s", e.what());
+    }
+  }
+}
+
+void OdometryNodelet::Process(const Input& input) {
+  RgbdFrame frame;
+  const std::string problem = ToFrame(input, &frame);
+  if (!problem.empty()) {
+    ++rejected_;
+    NODELET_ERROR_THROTTLE(1.0, "dslam: bad input, frame skipped: %s", problem.c_str());
+    const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
+    publisher_->PublishRejected(problem, input.colour->header, Counters(), latency_ms);
+    return;
+  }
+  const bool service_reset = ApplyRequestedReset();
+  FrameRequest request;
+  request.points = publisher_->WantsPoints();
+  request.edges = publisher_->WantsEdges();
+  FrameResult result = slam_->ProcessFrame(frame, request);
+  ++processed_;
+  const bool new_world = result.reset;  // the odometry's own reset: time went backwards
+  if (new_world) {
+    NODELET_WARN("dslam: odometry reset (%s): new run at the origin, new trajectory segment",
+                 result.message.c_str());
+    publisher_->ClearPath();
+  }
+  if (service_reset) {
+    result.reset = true;
+    result.message = "reset by the reset service: re-initialised at the last pose";
+  }
+  if (result.state == TrackingState::kLost) {
+    NODELET_WARN_THROTTLE(2.0, "dslam: tracking lost: %s", result.message.c_str());
+  }
+  RecordPose(result, new_world);
+  Publish(input, frame, result);
+}
+
+std::string OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
+  const StampVerdict stamp = stamps_->Check(input.colour->header.stamp.toSec());
+  if (!stamp.accept) return stamp.problem;
+  if (!stamp.problem.empty()) NODELET_WARN("dslam: %s", stamp.problem.c_str());
+  const std::string colour_id = NormaliseFrameId(input.colour->header.frame_id);
+  const std::string depth_id = NormaliseFrameId(input.depth->header.frame_id);
+  if (colour_id != depth_id) {
+    NODELET_WARN_THROTTLE(30.0,
+                          "dslam: colour frame '%s' and depth frame '%s' differ: depth must be "
+                          "registered to the colour camera (used as if it were)",
+                          colour_id.c_str(), depth_id.c_str());
+  }
+  try {
+    frame->stamp_s = input.colour->header.stamp.toSec();
+    frame->colour = ColourFromImage(*input.colour);
+    frame->depth_m = DepthFromImage(*input.depth);
+    frame->camera = yaml_camera_
+                        ? yaml_camera_
+                        : CameraFromInfo(*input.info, *input.colour,
+                                         config_.rectified_input ? ImageGeometry::kRectified
+                                                                 : ImageGeometry::kRaw);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  const std::string problem = frame->Check();
+  if (!problem.empty()) {
+    return problem + " (colour " + std::to_string(input.colour->width) + "x" +
+           std::to_string(input.colour->height) + ", depth " + std::to_string(input.depth->width) +
+           "x" + std::to_string(input.depth->height) + ")";
+  }
+  return "";
+}
+
+bool OdometryNodelet::ApplyRequestedReset() {
+  if (!reset_requested_.exchange(false)) return false;
+  slam_->Reset(ResetMode::kKeepPose);
+  NODELET_INFO("dslam: reset by the reset service: re-initialising at the last pose");
+  return true;
+}
+
+void OdometryNodelet::RecordPose(const FrameResult& result, bool new_world) {
+  const std::lock_guard<std::mutex> lock(trajectory_mutex_);
+  if (new_world) recorder_->StartSegment();
+  if (result.has_pose) recorder_->Add({result.stamp_s, result.T_world_camera});
+}
+
+void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
+                              const FrameResult& result) {
+  std_msgs::Header header = input.colour->header;
+  header.frame_id =
+      NormaliseFrameId(config_.camera_frame.empty() ? header.frame_id : config_.camera_frame);
+  const Eigen::Isometry3d& T_base_camera = CameraMount(header.frame_id, header.stamp);
+  const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
+  publisher_->Publish(result, frame, header, T_base_camera, Counters(), latency_ms);
+}
+
+FrameCounters OdometryNodelet::Counters() const {
+  return {received_.load(), processed_.load(), slot_.dropped(), rejected_.load()};
+}
+
+const Eigen::Isometry3d& OdometryNodelet::CameraMount(const std::string& camera_frame,
+                                                      const ros::Time& stamp) {
+  if (T_base_camera_) return *T_base_camera_;
+  std::string error;
+  if (!camera_frame.empty() &&
+      tf_buffer_->canTransform(config_.base_frame, camera_frame, ros::Time(0),
+                               ros::Duration(config_.tf_wait_s), &error)) {
+    T_base_camera_ = tf2::transformToEigen(
+        tf_buffer_->lookupTransform(config_.base_frame, camera_frame, ros::Time(0)));
+    NODELET_INFO("dslam: camera mount %s <- %s from TF", config_.base_frame.c_str(),
+                 camera_frame.c_str());
+    return *T_base_camera_;
+  }
+  T_base_camera_ = DefaultBaseFromOptical();
+  NODELET_INFO("dslam: no TF %s <- %s; using the default mount (optical z = base x)%s",
+               config_.base_frame.c_str(), camera_frame.c_str(),
+               config_.publish_tf ? " and publishing it" : "");
+  if (config_.publish_tf && !camera_frame.empty()) {
+    geometry_msgs::TransformStamped tf = tf2::eigenToTransform(*T_base_camera_);
+    tf.header.stamp = stamp;
+    tf.header.frame_id = config_.base_frame;
+    tf.child_frame_id = camera_frame;
+    static_broadcaster_->sendTransform(tf);
+  }
+  return *T_base_camera_;
+}
+
+}  // namespace ros_layer
+}  // namespace dslam

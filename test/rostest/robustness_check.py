@@ -1,0 +1,223 @@
+#!/usr/bin/env python3
+"""rostest: hand-made input sets into the dslam nodelet, one at a time (each waits for its status
+message), checking the documented behaviour of each robustness case (README, "Frames and
+conventions"): skipped sets reported as `rejected`, the reset service keeping the odometry
+continuous, time going backwards starting a new trajectory segment, warnings for frame ids, gaps
+and a missing camera_info, the streamed and saved segment files, the bounded path, and an
+invalid parameter stopping dslam_odometry_node."""
+
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import unittest
+
+import cv2
+import genpy
+import rospkg
+import rospy
+import rostest
+from nav_msgs.msg import Path
+from rosgraph_msgs.msg import Log
+from sensor_msgs.msg import CameraInfo, Image
+from std_srvs.srv import Trigger
+
+from dslam.msg import FrameStatus
+from dslam.srv import SaveTrajectory
+
+sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
+from dslam_tools import dataset, tum_bag  # noqa: E402
+from dslam_tools import trajectory as traj  # noqa: E402
+
+FRAMES = 60
+STREAM = "/tmp/dslam_robustness_stream.txt"  # ~trajectory_stream in robustness.test
+T0 = 1000.0
+
+
+class Sequence:
+    """The rendered frames as ready messages (colour rgb8, depth 32FC1 metres, camera_info)."""
+
+    def __init__(self, folder):
+        camera = dataset.load_camera_yaml(os.path.join(folder, "camera.yaml"))
+        rgb = dataset.read_file_list(os.path.join(folder, "rgb.txt"))
+        depth = dataset.read_file_list(os.path.join(folder, "depth.txt"))
+        self.camera = camera
+        self.colour = [tum_bag.colour_to_rgb8(cv2.imread(os.path.join(folder, e.path)), e.path)
+                       for e in rgb]
+        self.depth = [tum_bag.depth_to_metres(
+            tum_bag.read_png(os.path.join(folder, e.path), True), camera["depth_scale"])
+            for e in depth]
+
+    def messages(self, i, stamp_s, colour_frame="cam", depth_frame="cam", encoding="rgb8"):
+        stamp = genpy.Time.from_sec(stamp_s) if stamp_s else genpy.Time()
+        colour = tum_bag.make_image(self.colour[i], "rgb8", stamp, colour_frame, i)
+        colour.encoding = encoding
+        depth = tum_bag.make_image(self.depth[i], "32FC1", stamp, depth_frame, i)
+        info = tum_bag.make_camera_info(self.camera, stamp, colour_frame, i)
+        return colour, depth, info
+
+
+class Node:
+    """Publishers into the nodelet and recorders of its outputs."""
+
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.statuses, self.logs, self.path_lengths = [], [], []
+        self.pubs = [rospy.Publisher("/camera/rgb/image_color", Image, queue_size=5),
+                     rospy.Publisher("/camera/depth/image", Image, queue_size=5),
+                     rospy.Publisher("/camera/rgb/camera_info", CameraInfo, queue_size=5)]
+        self.subs = [rospy.Subscriber("/dslam/status", FrameStatus, self._status, queue_size=100),
+                     rospy.Subscriber("/rosout", Log, self._log, queue_size=1000),
+                     rospy.Subscriber("/dslam/path", Path, self._path, queue_size=100)]
+
+    def _status(self, msg):
+        with self.lock:
+            self.statuses.append(msg)
+
+    def _log(self, msg):
+        with self.lock:
+            self.logs.append(msg.msg)
+
+    def _path(self, msg):
+        with self.lock:
+            self.path_lengths.append(len(msg.poses))
+
+    def wait_connected(self):
+        deadline = time.time() + 30.0
+        while any(p.get_num_connections() == 0 for p in self.pubs) and time.time() < deadline:
+            time.sleep(0.1)
+
+    def send(self, messages, expect_status=True):
+        """Publishes one set; returns its status message (waits up to 20 s)."""
+        with self.lock:
+            count = len(self.statuses)
+        for pub, msg in zip(self.pubs, messages):
+            if msg is not None:
+                pub.publish(msg)
+        if not expect_status:
+            return None
+        deadline = time.time() + 20.0
+        while time.time() < deadline:
+            with self.lock:
+                if len(self.statuses) > count:
+                    return self.statuses[count]
+            time.sleep(0.01)
+        raise AssertionError("no status for the set stamped %s" % messages[0].header.stamp)
+
+    def logged(self, text):
+        with self.lock:
+            return any(text in line for line in self.logs)
+
+    def wait_logged(self, text, timeout_s=5.0):
+        deadline = time.time() + timeout_s
+        while time.time() < deadline and not self.logged(text):
+            time.sleep(0.05)
+        return self.logged(text)
+
+
+class RobustnessTest(unittest.TestCase):
+    def test_cases_in_order(self):
+        rospy.init_node("robustness_check")
+        work = tempfile.mkdtemp(prefix="dslam_robustness_")
+        folder = os.path.join(work, "static_room")
+        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "static_room",
+                               "--frames", str(FRAMES), "--seed", "1", "--output", folder],
+                              stdout=subprocess.DEVNULL)
+        seq, node = Sequence(folder), Node()
+        rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
+        node.wait_connected()
+        stamp = [T0 + i / 30.0 for i in range(FRAMES)]
+        for i in range(20):
+            self.assertNotEqual(node.send(seq.messages(i, stamp[i])).state, "rejected")
+        self.check_skipped_sets(seq, node, stamp)
+        self.check_reset_service(seq, node, stamp)
+        self.check_gap_and_backwards(seq, node, stamp)
+        self.check_saved_segments(work, folder, node)
+        self.check_missing_camera_info(seq, node)
+        self.assertTrue(node.path_lengths and max(node.path_lengths) <= 5, node.path_lengths)
+        self.check_invalid_parameter()
+
+    def check_skipped_sets(self, seq, node, stamp):
+        zero = node.send(seq.messages(20, 0.0))
+        self.assertEqual(zero.state, "rejected")
+        self.assertIn("zero timestamp", zero.message)
+        repeated = node.send(seq.messages(19, stamp[19]))
+        self.assertEqual(repeated.state, "rejected")
+        self.assertIn("repeated timestamp", repeated.message)
+        bad = node.send(seq.messages(20, stamp[20] - 0.001, encoding="32SC4"))
+        self.assertEqual(bad.state, "rejected")
+        self.assertIn("32SC4", bad.message)
+        self.assertGreaterEqual(bad.frames_rejected, 3)
+        other = node.send(seq.messages(20, stamp[20], depth_frame="other_depth_frame"))
+        self.assertNotEqual(other.state, "rejected")
+        self.assertTrue(node.wait_logged("depth frame 'other_depth_frame'"), "no frame-id warning")
+
+    def check_reset_service(self, seq, node, stamp):
+        self.assertTrue(rospy.ServiceProxy("/dslam/reset", Trigger)().success)
+        first = node.send(seq.messages(21, stamp[21]))
+        self.assertTrue(first.reset)
+        self.assertTrue(first.message.startswith("reset by the reset service"), first.message)
+        self.assertFalse(first.has_pose)  # assumed at the last pose, not measured
+        for i in range(22, 40):
+            if i == 30:  # a dropped depth message: no set is formed, tracking goes on
+                colour, _, info = seq.messages(i, stamp[i])
+                node.send([colour, None, info], expect_status=False)
+                continue
+            status = node.send(seq.messages(i, stamp[i]))
+            self.assertFalse(status.reset)
+            self.assertTrue(status.has_pose, "frame %d: %s" % (i, status.message))
+
+    def check_gap_and_backwards(self, seq, node, stamp):
+        late = node.send(seq.messages(40, stamp[40] + 5.0))
+        self.assertNotEqual(late.state, "rejected")
+        self.assertTrue(node.wait_logged("s since the previous frame"), "no gap warning")
+        back = node.send(seq.messages(41, stamp[0] + 0.5))
+        self.assertTrue(back.reset)
+        self.assertIn("time went backwards", back.message)
+        self.assertTrue(back.has_pose)  # the first frame of a new run, at the origin
+        for i in range(42, FRAMES):
+            node.send(seq.messages(i, stamp[0] + 0.5 + (i - 41) / 30.0))
+
+    def check_saved_segments(self, work, folder, node):
+        out = os.path.join(work, "saved.txt")
+        reply = rospy.ServiceProxy("/dslam/save_trajectory", SaveTrajectory)(out)
+        self.assertTrue(reply.success, reply.message)
+        older = traj.read_tum_positions(os.path.join(work, "saved.seg1.txt"))
+        current = traj.read_tum_positions(out)
+        self.assertEqual(reply.poses, len(older[0]) + len(current[0]))
+        # Frames 0-40 but the rejected ones, the re-initialised frame 21 and the dropped frame 30;
+        # the new run 41-59.
+        self.assertGreaterEqual(len(older[0]), 36)
+        self.assertGreaterEqual(len(current[0]), 17)
+        # The reset service kept one world frame: the whole first segment against ground truth.
+        ate_m = traj.evaluate(os.path.join(folder, "groundtruth.txt"),
+                              os.path.join(work, "saved.seg1.txt"))["metrics"]["ate_rmse_m"]
+        self.assertLess(ate_m, 0.03)
+        # The stream holds the same poses as the saved files, as it goes.
+        for saved, streamed in [(out, STREAM),
+                                (os.path.join(work, "saved.seg1.txt"),
+                                 STREAM.replace(".txt", ".seg1.txt"))]:
+            with open(saved) as a, open(streamed) as b:
+                self.assertEqual(a.read(), b.read())
+
+    def check_missing_camera_info(self, seq, node):
+        colour, depth, _ = seq.messages(0, 5000.0)
+        for k in range(25):  # 2.5 s of colour and depth without camera_info
+            node.pubs[0].publish(colour)
+            node.pubs[1].publish(depth)
+            time.sleep(0.1)
+        self.assertTrue(node.wait_logged("nothing on /camera/rgb/camera_info"),
+                        "no warning about the missing camera_info")
+
+    def check_invalid_parameter(self):
+        run = subprocess.run(["rosrun", "dslam", "dslam_odometry_node", "__name:=bad_params",
+                              "_queue_size:=0"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             timeout=60, universal_newlines=True)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("queue_size", run.stdout)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dslam", "robustness", RobustnessTest)
