@@ -45,7 +45,9 @@ for folder in "${sequences[@]}"; do
     fi
   done
 done
-for scenario in $SCENARIOS; do
+# Render comparison: the benchmark scenarios and `loop` (the long-run input, scripts/long_run.py).
+RENDERED="$SCENARIOS$(grep -qx loop <<< "$known" && echo " loop" || true)"
+for scenario in $RENDERED; do
   for side in before after; do
     bin=$BEFORE; [[ $side == after ]] && bin=$AFTER
     rm -rf "$OUT/render_$side/$scenario"

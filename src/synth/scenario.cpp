@@ -2,6 +2,8 @@
 // docs/readme/synth.md; change both together.
 #include "dslam/synth/scenario.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace dslam {
@@ -48,6 +50,45 @@ Scenario FastRotation(const std::string& name, uint32_t seed) {
   return s;
 }
 
+/// A walker that walks `laps` times round its loop in `period_s` [s], pausing `dwell_s` per lap:
+/// its speed is set so that a lap takes period_s / laps, and its stride (near the default 1.4 m)
+/// so that the period's walking distance is a whole number of strides; position, heading, gait
+/// and idle gestures then repeat with period_s.
+WalkerParams PeriodicWalker(std::vector<Eigen::Vector2d> path, std::vector<double> dwell_s,
+                            int laps, double period_s, double start_offset_m, uint32_t look) {
+  WalkerParams w = Walker(std::move(path), start_offset_m, look);
+  w.dwell_s = std::move(dwell_s);
+  double loop_length_m = 0.0, pause_s = 0.0;
+  for (size_t i = 0; i < w.path_m.size(); ++i) {
+    loop_length_m += (w.path_m[(i + 1) % w.path_m.size()] - w.path_m[i]).norm();
+  }
+  for (double d : w.dwell_s) pause_s += d;
+  w.speed_mps = loop_length_m / (period_s / laps - pause_s);
+  const double distance_m = laps * loop_length_m;
+  w.stride_m = distance_m / std::max(1.0, std::round(distance_m / w.stride_m));
+  return w;
+}
+
+/// Static room, camera on a closed half-sphere path (azimuth period 20 s, elevation period 10 s)
+/// and three walkers whose loops all repeat after 20 s: frame 600 (at 30 Hz) shows the geometry of
+/// frame 0, so the 600 frames replay in a loop without a jump (test/synth/loop_test.cpp).
+Scenario Loop(const std::string& name, uint32_t seed) {
+  Scenario s = Base(name, seed, CameraMotionKind::kHalfsphere);
+  s.period_s = 20.0;
+  s.frames = static_cast<int>(std::lround(s.period_s * s.fps));
+  s.camera.halfsphere_azimuth_period_s = s.period_s;
+  s.camera.halfsphere_elevation_period_s = s.period_s / 2.0;
+  // The loops of `walking` (4 and 3 laps per period) and one across the room in front of the
+  // table (2 laps: there and back, pausing 1 s at each end).
+  s.walkers = {
+      PeriodicWalker({{-0.7, -0.2}, {0.7, -0.2}, {0.3, -0.75}}, {0.0, 0.0, 1.5}, 4, s.period_s, 0.0,
+                     seed * 2 + 1),
+      PeriodicWalker({{0.9, 0.4}, {-0.9, 0.4}, {-0.3, -0.6}}, {0.0, 0.0, 1.0}, 3, s.period_s, 1.0,
+                     seed * 2 + 2),
+      PeriodicWalker({{-1.8, 1.0}, {1.8, 1.0}}, {1.0, 1.0}, 2, s.period_s, 0.0, seed * 2 + 3)};
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> ScenarioNames() {
@@ -58,7 +99,8 @@ std::vector<std::pair<std::string, std::string>> ScenarioNames() {
           {"close_person", "one walker stopping 0.7 m in front of the camera, camera small xyz"},
           {"slow_box", "two boxes sliding 3 and 1.5 mm per frame, camera xyz"},
           {"nonrigid_sheet", "a hanging sheet deformed by travelling waves, camera xyz"},
-          {"fast_rotation", "static room, handheld fast roll/pitch/yaw with 15 ms motion blur"}};
+          {"fast_rotation", "static room, handheld fast roll/pitch/yaw with 15 ms motion blur"},
+          {"loop", "three walkers, camera on a half sphere; everything repeats after 20 s"}};
 }
 
 Scenario MakeScenario(const std::string& name, uint32_t seed) {
@@ -108,6 +150,7 @@ Scenario MakeScenario(const std::string& name, uint32_t seed) {
     return s;
   }
   if (name == "fast_rotation") return FastRotation(name, seed);
+  if (name == "loop") return Loop(name, seed);
   throw std::invalid_argument("unknown scenario '" + name + "'");
 }
 

@@ -45,6 +45,10 @@ struct Scenario {
   int frames = 300;               ///< default number of frames
   double fps = 30.0;              ///< [Hz]
   double start_stamp_s = 1000.0;  ///< [s] stamp of frame 0
+  /// [s] > 0: the camera and every moving thing repeat with this period, so frame
+  /// period_s * fps (an integer, = frames) shows the geometry of frame 0 and the frames can be
+  /// replayed in a loop without a jump (`loop`); 0: not periodic.
+  double period_s = 0.0;
   RoomParams room;
   SensorParams sensor;
   CameraMotionParams camera;

@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""rostest: renders 10 frames of static_room (dslam_synth), runs dslam_replay on them at 30 Hz for
+2 s with 16UC1 depth (60 frames, 6 loops) and checks what arrives on /camera/*: 60 messages per
+topic, stamps of colour, depth and camera_info equal per frame and strictly increasing by 1/30 s
+(across loops), arrival spread close to 59/30 s, the encodings, the intrinsics of camera.yaml,
+frame k + 10 carrying the pixels of frame k (looping), and the replay's own count."""
+
+import os
+import re
+import subprocess
+import tempfile
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+from sensor_msgs.msg import CameraInfo, Image
+
+FRAMES = 10
+RATE_HZ = 30.0
+DURATION_S = 2.0
+EXPECTED = int(RATE_HZ * DURATION_S)
+
+
+class Recorder:
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.messages = {"rgb": [], "depth": [], "info": []}
+
+    def callback(self, name):
+        def store(msg):
+            with self.lock:
+                self.messages[name].append((time.monotonic(), msg))
+        return store
+
+
+class ReplayTest(unittest.TestCase):
+    def test_replay(self):
+        rospy.init_node("replay_check")
+        work = tempfile.mkdtemp(prefix="dslam_replay_")
+        folder = os.path.join(work, "static_room")
+        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "static_room",
+                               "--frames", str(FRAMES), "--seed", "1", "--output", folder],
+                              stdout=subprocess.DEVNULL)
+        rec = Recorder()
+        subs = [rospy.Subscriber("/camera/rgb/image", Image, rec.callback("rgb"), queue_size=100),
+                rospy.Subscriber("/camera/depth/image", Image, rec.callback("depth"),
+                                 queue_size=100),
+                rospy.Subscriber("/camera/rgb/camera_info", CameraInfo, rec.callback("info"),
+                                 queue_size=100)]
+        out = subprocess.run(["rosrun", "dslam", "dslam_replay", "--dataset", folder, "--rate",
+                              str(RATE_HZ), "--duration", str(DURATION_S), "--depth", "16UC1",
+                              "__ns:=/camera"], check=True, stdout=subprocess.PIPE, text=True,
+                             timeout=60).stdout
+        rospy.sleep(1.0)
+        for sub in subs:
+            sub.unregister()
+        self.assertRegex(out, r"published %d frames" % EXPECTED)
+        with rec.lock:
+            msgs = {name: list(m) for name, m in rec.messages.items()}
+        for name, received in msgs.items():
+            self.assertEqual(len(received), EXPECTED, name)
+        rgb = [m for _, m in msgs["rgb"]]
+        depth = [m for _, m in msgs["depth"]]
+        info = [m for _, m in msgs["info"]]
+        for k in range(EXPECTED):
+            self.assertEqual(rgb[k].header.stamp, depth[k].header.stamp)
+            self.assertEqual(rgb[k].header.stamp, info[k].header.stamp)
+        steps = [(b.header.stamp - a.header.stamp).to_sec() for a, b in zip(rgb, rgb[1:])]
+        self.assertTrue(all(abs(s - 1.0 / RATE_HZ) < 1e-6 for s in steps), steps)
+        spread = msgs["rgb"][-1][0] - msgs["rgb"][0][0]
+        rospy.loginfo("replay_check: %d frames arrived over %.3f s", EXPECTED, spread)
+        self.assertAlmostEqual(spread, (EXPECTED - 1) / RATE_HZ, delta=0.25)
+        self.assertEqual(rgb[0].encoding, "bgr8")
+        self.assertEqual(depth[0].encoding, "16UC1")
+        self.assertEqual((rgb[0].width, rgb[0].height), (640, 480))
+        self.assertEqual(list(info[0].K), [525.0, 0.0, 319.5, 0.0, 525.0, 239.5, 0.0, 0.0, 1.0])
+        self.assertEqual(rgb[3].data, rgb[3 + FRAMES].data)
+        self.assertEqual(depth[3].data, depth[3 + 2 * FRAMES].data)
+        self.assertNotEqual(rgb[3].data, rgb[4].data)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dslam", "replay", ReplayTest)
