@@ -153,6 +153,9 @@ int Run(const Options& options) {
     return 1;
   }
   const ReplaySummary s = Replay(&frames, &info, options, &colour_pub, &depth_pub, &info_pub);
+  // roscpp sends on its own threads; messages still queued when the process exits are lost
+  // (replay.test saw 59 of 60 camera_info messages arrive without this wait).
+  ros::WallDuration(0.5).sleep();
   std::printf(
       "dslam_replay: published %lu frames (%.2f loops) in %.1f s (%.2f Hz); %lu more than one "
       "period late, max %.1f ms late\n",
