@@ -70,7 +70,9 @@ mkdir -p "$REPORTS"
 #    program's own (a failing test), the reports are judged below.
 #  address: ASan and UBSan stop at the first error (UB checks are built without recovery), and
 #    exitcode=0 keeps that apart from a failing test: the report is judged below, the missing
-#    gtest summary fails the run. LeakSanitizer runs at exit and reports every leak.
+#    gtest summary fails the run. UBSan ends the program with status 1 whatever exitcode says,
+#    and writes to stderr (kept in $REPORTS/<run>.out, judged too). LeakSanitizer runs at exit
+#    and reports every leak.
 #    detect_stack_use_after_return: also catches a pointer to a returned function's locals.
 sanitizer_env() {
   local name=$1 log="log_path=$REPORTS/$1"

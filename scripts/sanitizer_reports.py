@@ -3,7 +3,9 @@
 
 Usage: sanitizer_reports.py REPORTS_DIR MARK_REGEX REPO
 
-Reads every log file REPORTS_DIR/<run>.<pid> (the sanitizers' log_path), splits it into reports
+Reads every log file REPORTS_DIR/<run>.<pid> (the sanitizers' log_path) and every run's output
+REPORTS_DIR/<run>.out (GCC's UndefinedBehaviorSanitizer writes to stderr even with a log_path
+when it runs with AddressSanitizer; measured with GCC 12), splits them into reports
 (ThreadSanitizer warnings, AddressSanitizer errors, each leak of a LeakSanitizer report,
 UndefinedBehaviorSanitizer runtime errors), and prints one line per report: IN DSLAM when one of
 its stacks has a frame that names `dslam::` or a file under REPO, OUTSIDE otherwise. For
@@ -54,7 +56,8 @@ def access_stacks(report):
 def main():
     reports, mark, repo = sys.argv[1], sys.argv[2], sys.argv[3]
     in_dslam = other = 0
-    for path in sorted(glob.glob(os.path.join(reports, "*.[0-9]*"))):
+    logs = glob.glob(os.path.join(reports, "*.[0-9]*")) + glob.glob(os.path.join(reports, "*.out"))
+    for path in sorted(logs):
         if path.endswith(".xml"):
             continue
         text = open(path, errors="replace").read()
