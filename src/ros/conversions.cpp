@@ -8,6 +8,7 @@
 
 #include "dslam/core/depth_conversion.h"
 #include "dslam/core/geometry.h"
+#include "dslam/ros/image_layout.h"
 #include "dslam/tracking/pose_optimizer.h"
 
 namespace dslam {
@@ -24,6 +25,7 @@ cv::Mat ColourFromImage(const sensor_msgs::Image& image) {
   if (e != enc::RGB8 && e != enc::BGR8 && e != enc::MONO8) {
     throw std::invalid_argument("colour encoding '" + e + "' is not rgb8, bgr8 or mono8");
   }
+  CheckImageLayout(image);
   const cv_bridge::CvImageConstPtr cv = cv_bridge::toCvShare(image, nullptr);
   cv::Mat out;
   if (e == enc::RGB8)
@@ -39,6 +41,7 @@ cv::Mat DepthFromImage(const sensor_msgs::Image& image) {
     throw std::invalid_argument("depth encoding '" + e +
                                 "' is not 16UC1 (millimetres) or 32FC1 (metres)");
   }
+  CheckImageLayout(image);
   const cv_bridge::CvImageConstPtr cv = cv_bridge::toCvShare(image, nullptr);
   if (e == enc::TYPE_32FC1) return DepthFromMetres(cv->image);
   return DepthFromMillimetres(cv->image);

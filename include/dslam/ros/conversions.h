@@ -20,11 +20,13 @@ namespace ros_layer {
 std::string NormaliseFrameId(const std::string& frame_id);
 
 /// rgb8 / bgr8 / mono8 image -> CV_8UC3 BGR or CV_8UC1 grey (a copy).
-/// Throws std::invalid_argument naming the encoding otherwise.
+/// Throws std::invalid_argument naming the encoding otherwise, or the problem of an image whose
+/// size or layout CheckImageLayout (dslam/ros/image_layout.h) rejects.
 cv::Mat ColourFromImage(const sensor_msgs::Image& image);
 
 /// 16UC1 (millimetres) / 32FC1 (metres) depth -> CV_32FC1 metres, 0 = no measurement (NaN,
-/// infinite, zero and negative values become 0). Throws std::invalid_argument otherwise.
+/// infinite, zero and negative values become 0). Throws std::invalid_argument otherwise, or as
+/// ColourFromImage for a bad size or layout.
 cv::Mat DepthFromImage(const sensor_msgs::Image& image);
 
 /// Pinhole camera from K and plumb_bob D (an empty D or all zeros: no distortion).
