@@ -99,6 +99,20 @@ class YamlWriter {
   std::ostringstream* out_;
 };
 
+/// The text of a map key; a key that is not a scalar ("? [a]: 1", "? {a: 1}: 1") cannot name a
+/// section or parameter. `where` is the dotted path of the map ("" for the top level).
+std::string KeyName(const YAML::Node& key, const std::string& where) {
+  if (!key.IsScalar()) {
+    throw ConfigError((where.empty() ? std::string("config") : where) +
+                      ": keys must be plain names, got a " +
+                      (key.IsMap()        ? "map"
+                       : key.IsSequence() ? "sequence"
+                                          : "null") +
+                      " as a key");
+  }
+  return key.Scalar();
+}
+
 void LoadConfigNode(const YAML::Node& root, Config* config) {
   if (!root || root.IsNull()) return;
   if (!root.IsMap()) throw ConfigError("config: top level must be a map of sections");
@@ -112,13 +126,13 @@ void LoadConfigNode(const YAML::Node& root, Config* config) {
     using Section = std::decay_t<decltype(section)>;
     Section::Fields(section, YamlReader(node, std::string(name) + ".", &used));
     for (const auto& kv : node) {
-      const std::string key = kv.first.as<std::string>();
+      const std::string key = KeyName(kv.first, name);
       if (!used.count(key))
         throw ConfigError(std::string(name) + "." + key + ": unknown parameter");
     }
   });
   for (const auto& kv : root) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = KeyName(kv.first, "");
     if (!sections.count(key)) throw ConfigError(key + ": unknown config section");
   }
   config->Validate();
