@@ -39,7 +39,7 @@ cv::Mat DepthFromMetres(const cv::Mat& depth_m) {
 }
 
 cv::Mat ReadDepthPng(const std::string& path, double units_per_metre) {
-  CheckPngFileSize(path);
+  CheckImageFile(path, /*allow_jpeg=*/false);
   const cv::Mat raw = cv::imread(path, cv::IMREAD_ANYDEPTH);
   if (raw.empty()) throw std::runtime_error("cannot read depth image " + path);
   if (raw.type() != CV_16UC1) throw std::runtime_error(path + ": depth PNG is not 16-bit");

@@ -22,13 +22,21 @@ void CheckImageSize(int64_t width, int64_t height, const std::string& what) {
   }
 }
 
-void CheckPngFileSize(const std::string& path) {
+void CheckImageFile(const std::string& path, bool allow_jpeg) {
   // Signature (8 bytes), IHDR length and type (8 bytes), width and height (big-endian uint32).
   std::array<unsigned char, 24> header{};
   std::ifstream in(path, std::ios::binary);
-  if (!in.read(reinterpret_cast<char*>(header.data()), header.size())) return;
-  const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (std::memcmp(header.data(), kSignature, sizeof(kSignature)) != 0) return;
+  if (!in) return;
+  in.read(reinterpret_cast<char*>(header.data()), header.size());
+  const std::streamsize read = in.gcount();
+  const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  const unsigned char kJpeg[3] = {0xff, 0xd8, 0xff};
+  if (read >= 3 && allow_jpeg && std::memcmp(header.data(), kJpeg, sizeof(kJpeg)) == 0) return;
+  if (read < 8) return;
+  if (std::memcmp(header.data(), kPng, sizeof(kPng)) != 0) {
+    throw std::runtime_error(path + ": not a PNG" + (allow_jpeg ? " or JPEG" : "") + " file");
+  }
+  if (read < static_cast<std::streamsize>(header.size())) return;
   const auto be32 = [&](int at) {
     return (int64_t{header[at]} << 24) | (int64_t{header[at + 1]} << 16) |
            (int64_t{header[at + 2]} << 8) | int64_t{header[at + 3]};

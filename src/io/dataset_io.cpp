@@ -163,7 +163,7 @@ RgbdFrame TumDataset::LoadFrame(size_t index) const {
   RgbdFrame frame;
   frame.stamp_s = pair.colour.stamp_s;
   frame.camera = camera_yaml_.camera;
-  CheckPngFileSize(folder_ + "/" + pair.colour.path);
+  CheckImageFile(folder_ + "/" + pair.colour.path, /*allow_jpeg=*/true);
   frame.colour = cv::imread(folder_ + "/" + pair.colour.path, cv::IMREAD_COLOR);
   if (frame.colour.empty()) {
     throw std::runtime_error("cannot read colour image " + folder_ + "/" + pair.colour.path);

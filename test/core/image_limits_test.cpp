@@ -74,7 +74,19 @@ TEST(ImageLimits, PngHeaderBeyondLimitsIsRejectedBeforeDecoding) {
       .write(reinterpret_cast<const char*>(header), sizeof(header));
   const std::string error = ErrorOf([&] { ReadDepthPng(path, 5000.0); });
   EXPECT_NE(error.find("PNG header: image size 32768x32767"), std::string::npos) << error;
-  EXPECT_NO_THROW(CheckPngFileSize(path + ".missing"));  // the reader reports a missing file
+  EXPECT_NO_THROW(CheckImageFile(path + ".missing", false));  // the reader reports it
+}
+
+TEST(ImageLimits, DepthFilesOtherThanPngAreNotDecoded) {
+  // 128 bytes and "DICM": OpenCV hands the file to GDCM, whose reader asserts (abort) on it
+  // (found by fuzz_depth_conversion; test/fuzz/regressions/depth_conversion/dicom_gdcm_abort).
+  const std::string path = testing::TempDir() + "/dslam_dicom_like.png";
+  std::ofstream(path, std::ios::binary) << std::string(128, '\xc8') << "DICM\x02";
+  const std::string error = ErrorOf([&] { ReadDepthPng(path, 5000.0); });
+  EXPECT_NE(error.find("not a PNG file"), std::string::npos) << error;
+  std::ofstream(path, std::ios::binary) << "\xff\xd8\xff" << std::string(40, '\0');
+  EXPECT_NO_THROW(CheckImageFile(path, /*allow_jpeg=*/true));
+  EXPECT_THROW(CheckImageFile(path, /*allow_jpeg=*/false), std::runtime_error);
 }
 
 }  // namespace

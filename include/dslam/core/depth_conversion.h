@@ -27,8 +27,8 @@ inline cv::Mat DepthFromMillimetres(const cv::Mat& depth_mm) {
 cv::Mat DepthFromMetres(const cv::Mat& depth_m);
 
 /// Reads a 16-bit depth PNG (TUM layout) and converts it with `units_per_metre` (5000 for TUM).
-/// Throws std::runtime_error when the file cannot be read, is not 16-bit single channel, or is a
-/// PNG whose header declares a size beyond dslam/core/image_limits.h (checked before decoding).
+/// Throws std::runtime_error when the file cannot be read, is not 16-bit single channel, or is
+/// not a PNG within dslam/core/image_limits.h (CheckImageFile, before decoding).
 cv::Mat ReadDepthPng(const std::string& path, double units_per_metre);
 
 /// Number of pixels with a valid (> 0) depth.

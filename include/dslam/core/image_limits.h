@@ -18,9 +18,13 @@ constexpr int64_t kMaxImagePixels = int64_t{1} << 25;
 /// kMaxImageSidePx, or width * height is above kMaxImagePixels.
 void CheckImageSize(int64_t width, int64_t height, const std::string& what);
 
-/// When the file at `path` starts with the PNG signature, checks the size in its header (IHDR)
-/// with CheckImageSize before a decoder allocates that size; throws std::runtime_error naming
-/// the file. Other files, and files that cannot be opened, pass (their reader reports them).
-void CheckPngFileSize(const std::string& path);
+/// Checks an image file before OpenCV decodes it: it must start with the PNG signature (or,
+/// with `allow_jpeg`, the JPEG one), and a PNG's header (IHDR) must declare a size that passes
+/// CheckImageSize. Throws std::runtime_error naming the file otherwise. cv::imread picks its
+/// decoder by the file's first bytes, and some of Debian's decoders abort the process on a
+/// malformed file (GDCM's DICOM reader asserts); dataset images are PNG (JPEG for colour). A file
+/// that cannot be opened, is shorter than 8 bytes, or is a PNG shorter than its header passes (the
+/// decoder reports it).
+void CheckImageFile(const std::string& path, bool allow_jpeg);
 
 }  // namespace dslam

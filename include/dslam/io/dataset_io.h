@@ -69,7 +69,8 @@ class TumDataset {
   std::string rgb_list_path() const { return folder_ + "/rgb.txt"; }
 
   /// Loads pair `index`: colour as BGR, depth in metres. Throws std::runtime_error on bad files,
-  /// and before decoding a PNG whose header declares a size beyond dslam/core/image_limits.h.
+  /// and before decoding a colour file that is not PNG or JPEG, a depth file that is not PNG, or
+  /// a PNG whose header declares a size beyond dslam/core/image_limits.h (CheckImageFile).
   RgbdFrame LoadFrame(size_t index) const;
 
  private:
