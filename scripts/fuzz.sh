@@ -71,6 +71,7 @@ for target in "${TARGETS[@]}"; do
   mkdir -p "$corpus" "$artifacts" "$FUZZ_SRC/corpus/$target" "$FUZZ_SRC/regressions/$target"
   echo "[fuzz] $target: $RUNS executions (log: $log)"
   start=$SECONDS code=0
+  touch "$artifacts/.run_start"  # failures of this run: the artifacts newer than this mark
   # One process fuzzing in the foreground (no -jobs: libFuzzer would fork a child that logs to
   # fuzz-<n>.log in the current folder). detect_leaks: LeakSanitizer after each input that
   # allocated more than it freed.
@@ -83,7 +84,7 @@ for target in "${TARGETS[@]}"; do
   rate="$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)"
   coverage="$(grep -oE 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -n 1 | sed 's/cov: //; s/ ft: / \/ /')"
   units="$(find "$corpus" -type f | wc -l)"
-  crashes="$(find "$artifacts" -type f | wc -l)"
+  crashes="$(find "$artifacts" -type f -newer "$artifacts/.run_start" | wc -l)"
   if ((code != 0 || crashes > 0)); then
     failed=$((failed + 1))
     grep -E '^(==[0-9]+==ERROR|SUMMARY|.*runtime error|terminate called|  what\(\))' "$log" |
