@@ -54,6 +54,8 @@ TEST(Config, YamlRejectsKeysThatAreNotNames) {
   };
   EXPECT_EQ(error("pose:\n  ? {huber_delta_pixel: 2.4}\n  : 1\n"),
             "pose: keys must be plain names, got a map as a key");
+  // A NUL in a key ended the message at what() (an empty message).
+  EXPECT_EQ(error("\"\\0pose\": {}\n"), "\\x00pose: unknown config section");  // YAML "\0": NUL
   EXPECT_EQ(error("? [dataset]\n: {}\n"),
             "config: keys must be plain names, got a sequence as a key");
 }
