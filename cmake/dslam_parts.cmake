@@ -56,19 +56,35 @@ macro(dslam_part name)
 endmacro()
 
 # DSLAM_SANITIZE (cache variable: thread, address, undefined or empty): every dslam library, tool
-# and gtest is compiled with -fsanitize=<kind> -g -O1 and linked with -fsanitize=<kind>; per
-# target, never a global flag, so gtest and other packages built in the workspace stay as they are.
-# scripts/sanitize.sh configures it in a workspace of its own (build/tsan, ...).
+# and gtest is compiled with the kind's -fsanitize flags, -g -O1 and linked with them; per target,
+# never a global flag, so gtest and other packages built in the workspace stay as they are.
+#   thread     -fsanitize=thread
+#   address    -fsanitize=address,undefined,float-cast-overflow with -fno-sanitize-recover for the
+#              UB checks: AddressSanitizer (and LeakSanitizer) plus UndefinedBehaviorSanitizer,
+#              where undefined behaviour aborts the program like a memory error (a report that
+#              cannot be overlooked); float-cast-overflow (a double out of an int's range cast to
+#              int) is not in GCC's `undefined` group.
+#   undefined  the UB part of `address` alone.
+# scripts/sanitize.sh configures it in a workspace of its own (build/tsan, build/asan, ...).
 set(DSLAM_SANITIZE "" CACHE STRING "sanitizer of the dslam targets: thread, address, undefined")
 if(DSLAM_SANITIZE AND NOT DSLAM_SANITIZE MATCHES "^(thread|address|undefined)$")
   message(FATAL_ERROR "DSLAM_SANITIZE=${DSLAM_SANITIZE}: use thread, address or undefined")
 endif()
+set(DSLAM_UB_CHECKS undefined,float-cast-overflow)
+if(DSLAM_SANITIZE STREQUAL "address")
+  set(DSLAM_SANITIZE_FLAGS
+    -fsanitize=address,${DSLAM_UB_CHECKS} -fno-sanitize-recover=${DSLAM_UB_CHECKS})
+elseif(DSLAM_SANITIZE STREQUAL "undefined")
+  set(DSLAM_SANITIZE_FLAGS
+    -fsanitize=${DSLAM_UB_CHECKS} -fno-sanitize-recover=${DSLAM_UB_CHECKS})
+elseif(DSLAM_SANITIZE)
+  set(DSLAM_SANITIZE_FLAGS -fsanitize=${DSLAM_SANITIZE})
+endif()
 
 function(dslam_sanitize target)
   if(DSLAM_SANITIZE)
-    target_compile_options(${target} PRIVATE
-      -fsanitize=${DSLAM_SANITIZE} -g -O1 -fno-omit-frame-pointer)
-    target_link_options(${target} PRIVATE -fsanitize=${DSLAM_SANITIZE})
+    target_compile_options(${target} PRIVATE ${DSLAM_SANITIZE_FLAGS} -g -O1 -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE ${DSLAM_SANITIZE_FLAGS})
   endif()
 endfunction()
 

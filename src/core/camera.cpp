@@ -1,19 +1,27 @@
 #include "dslam/core/camera.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "dslam/core/image_limits.h"
 
 namespace dslam {
 
 PinholeCamera::PinholeCamera(int width, int height, double fx, double fy, double cx, double cy,
                              const Distortion& distortion)
     : width_(width), height_(height), fx_(fx), fy_(fy), cx_(cx), cy_(cy), distortion_(distortion) {
-  if (width <= 0 || height <= 0) {
-    throw std::invalid_argument("camera: image size must be positive, got " +
-                                std::to_string(width) + "x" + std::to_string(height));
+  CheckImageSize(width, height, "camera");
+  if (!(fx > 0.0) || !(fy > 0.0) || !std::isfinite(fx) || !std::isfinite(fy)) {
+    throw std::invalid_argument("camera: focal lengths fx, fy must be positive and finite");
   }
-  if (!(fx > 0.0) || !(fy > 0.0)) {
-    throw std::invalid_argument("camera: focal lengths fx, fy must be positive");
+  if (!std::isfinite(cx) || !std::isfinite(cy)) {
+    throw std::invalid_argument("camera: principal point cx, cy must be finite");
+  }
+  const Distortion& d = distortion;
+  if (!std::isfinite(d.k1) || !std::isfinite(d.k2) || !std::isfinite(d.p1) ||
+      !std::isfinite(d.p2) || !std::isfinite(d.k3)) {
+    throw std::invalid_argument("camera: distortion coefficients must be finite");
   }
 }
 

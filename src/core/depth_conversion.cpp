@@ -7,6 +7,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "dslam/core/image_limits.h"
+
 namespace dslam {
 
 cv::Mat DepthFromScaledUint16(const cv::Mat& depth_units, double units_per_metre) {
@@ -14,7 +16,11 @@ cv::Mat DepthFromScaledUint16(const cv::Mat& depth_units, double units_per_metre
     throw std::invalid_argument("depth: expected 16UC1, got OpenCV type " +
                                 std::to_string(depth_units.type()));
   }
-  if (!(units_per_metre > 0.0)) throw std::invalid_argument("depth: scale must be positive");
+  if (depth_units.empty()) throw std::invalid_argument("depth: the image is empty");
+  if (!(units_per_metre >= kMinDepthUnitsPerMetre && units_per_metre <= kMaxDepthUnitsPerMetre)) {
+    throw std::invalid_argument("depth: units per metre must be in [1, 1e6], got " +
+                                std::to_string(units_per_metre));
+  }
   cv::Mat metres;
   depth_units.convertTo(metres, CV_32FC1, 1.0 / units_per_metre);
   return metres;
@@ -25,6 +31,7 @@ cv::Mat DepthFromMetres(const cv::Mat& depth_m) {
     throw std::invalid_argument("depth: expected 32FC1, got OpenCV type " +
                                 std::to_string(depth_m.type()));
   }
+  if (depth_m.empty()) throw std::invalid_argument("depth: the image is empty");
   cv::Mat clean = depth_m.clone();
   clean.forEach<float>([](float& d, const int*) {
     if (!std::isfinite(d) || d <= 0.0f) d = 0.0f;
@@ -33,6 +40,7 @@ cv::Mat DepthFromMetres(const cv::Mat& depth_m) {
 }
 
 cv::Mat ReadDepthPng(const std::string& path, double units_per_metre) {
+  CheckImageFile(path, /*allow_jpeg=*/false);
   const cv::Mat raw = cv::imread(path, cv::IMREAD_ANYDEPTH);
   if (raw.empty()) throw std::runtime_error("cannot read depth image " + path);
   if (raw.type() != CV_16UC1) throw std::runtime_error(path + ": depth PNG is not 16-bit");

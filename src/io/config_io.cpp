@@ -99,6 +99,36 @@ class YamlWriter {
   std::ostringstream* out_;
 };
 
+/// `text` for an error message: control characters as \xNN (a NUL would end what()), cut to
+/// 80 characters.
+std::string Printable(const std::string& text) {
+  std::string out;
+  for (const char c : text.substr(0, 80)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out += c;
+    } else {
+      static const char kHex[] = "0123456789abcdef";
+      out += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+    }
+  }
+  return text.size() > 80 ? out + "..." : out;
+}
+
+/// The text of a map key; a key that is not a scalar ("? [a]: 1", "? {a: 1}: 1") cannot name a
+/// section or parameter. `where` is the dotted path of the map ("" for the top level).
+std::string KeyName(const YAML::Node& key, const std::string& where) {
+  if (!key.IsScalar()) {
+    throw ConfigError((where.empty() ? std::string("config") : where) +
+                      ": keys must be plain names, got a " +
+                      (key.IsMap()        ? "map"
+                       : key.IsSequence() ? "sequence"
+                                          : "null") +
+                      " as a key");
+  }
+  return key.Scalar();
+}
+
 void LoadConfigNode(const YAML::Node& root, Config* config) {
   if (!root || root.IsNull()) return;
   if (!root.IsMap()) throw ConfigError("config: top level must be a map of sections");
@@ -112,14 +142,14 @@ void LoadConfigNode(const YAML::Node& root, Config* config) {
     using Section = std::decay_t<decltype(section)>;
     Section::Fields(section, YamlReader(node, std::string(name) + ".", &used));
     for (const auto& kv : node) {
-      const std::string key = kv.first.as<std::string>();
+      const std::string key = KeyName(kv.first, name);
       if (!used.count(key))
-        throw ConfigError(std::string(name) + "." + key + ": unknown parameter");
+        throw ConfigError(std::string(name) + "." + Printable(key) + ": unknown parameter");
     }
   });
   for (const auto& kv : root) {
-    const std::string key = kv.first.as<std::string>();
-    if (!sections.count(key)) throw ConfigError(key + ": unknown config section");
+    const std::string key = KeyName(kv.first, "");
+    if (!sections.count(key)) throw ConfigError(Printable(key) + ": unknown config section");
   }
   config->Validate();
 }

@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "dslam/core/depth_conversion.h"
+#include "dslam/core/image_limits.h"
 #include "dslam/io/stamp_association.h"
 
 namespace dslam {
@@ -31,14 +32,31 @@ double OptionalNumber(const YAML::Node& root, const std::string& key, double fal
   return root[key] ? RequiredNumber(root, key, path) : fallback;
 }
 
-}  // namespace
+/// An image side [px]: a whole number in [1, kMaxImageSidePx] (checked before the cast to int).
+int RequiredSide(const YAML::Node& root, const std::string& key, const std::string& path) {
+  const double value = RequiredNumber(root, key, path);
+  if (!(value >= 1.0 && value <= kMaxImageSidePx) || value != std::floor(value)) {
+    throw std::runtime_error(path + ": key '" + key + "' must be a whole number of pixels in [1, " +
+                             std::to_string(kMaxImageSidePx) + "], got " + std::to_string(value));
+  }
+  return static_cast<int>(value);
+}
 
-CameraYaml LoadCameraYaml(const std::string& path) {
-  YAML::Node root;
+std::string OptionalString(const YAML::Node& root, const std::string& key,
+                           const std::string& fallback, const std::string& path) {
+  const YAML::Node node = root[key];
+  if (!node) return fallback;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error("cannot read camera file " + path + ": " + e.what());
+    return node.as<std::string>();
+  } catch (const YAML::Exception&) {
+    throw std::runtime_error(path + ": key '" + key + "' is not a string");
+  }
+}
+
+CameraYaml CameraYamlFromNode(const YAML::Node& root, const std::string& path) {
+  if (!root.IsMap()) {
+    throw std::runtime_error(path +
+                             ": expected a map of keys (width, height, fx, fy, cx, cy, ...)");
   }
   Distortion d;
   d.k1 = OptionalNumber(root, "k1", 0.0, path);
@@ -48,18 +66,21 @@ CameraYaml LoadCameraYaml(const std::string& path) {
   d.k3 = OptionalNumber(root, "k3", 0.0, path);
   CameraYaml out;
   try {
+    const int width = RequiredSide(root, "width", path),
+              height = RequiredSide(root, "height", path);
+    CheckImageSize(width, height, path);
     out.camera = std::make_shared<PinholeCamera>(
-        static_cast<int>(RequiredNumber(root, "width", path)),
-        static_cast<int>(RequiredNumber(root, "height", path)), RequiredNumber(root, "fx", path),
-        RequiredNumber(root, "fy", path), RequiredNumber(root, "cx", path),
-        RequiredNumber(root, "cy", path), d);
+        width, height, RequiredNumber(root, "fx", path), RequiredNumber(root, "fy", path),
+        RequiredNumber(root, "cx", path), RequiredNumber(root, "cy", path), d);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
   out.depth_scale = OptionalNumber(root, "depth_scale", 5000.0, path);
-  if (!(out.depth_scale > 0.0)) throw std::runtime_error(path + ": depth_scale must be > 0");
-  const std::string correction =
-      root["groundtruth_correction"] ? root["groundtruth_correction"].as<std::string>() : "none";
+  if (!(out.depth_scale >= kMinDepthUnitsPerMetre && out.depth_scale <= kMaxDepthUnitsPerMetre)) {
+    throw std::runtime_error(path + ": depth_scale must be in [1, 1e6] units per metre, got " +
+                             std::to_string(out.depth_scale));
+  }
+  const std::string correction = OptionalString(root, "groundtruth_correction", "none", path);
   if (correction == "bonn") {
     out.groundtruth_correction = GroundTruthCorrection::kBonn;
   } else if (correction != "none") {
@@ -69,9 +90,35 @@ CameraYaml LoadCameraYaml(const std::string& path) {
   return out;
 }
 
+}  // namespace
+
+CameraYaml LoadCameraYaml(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error("cannot read camera file " + path + ": " + e.what());
+  }
+  return CameraYamlFromNode(root, path);
+}
+
+CameraYaml ParseCameraYaml(const std::string& yaml_text, const std::string& name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error("cannot read camera file " + name + ": " + e.what());
+  }
+  return CameraYamlFromNode(root, name);
+}
+
 std::vector<StampedFile> ReadFileList(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open file list " + path);
+  return ParseFileList(in, path);
+}
+
+std::vector<StampedFile> ParseFileList(std::istream& in, const std::string& path) {
   std::vector<StampedFile> files;
   std::string line;
   int line_number = 0;
@@ -116,6 +163,7 @@ RgbdFrame TumDataset::LoadFrame(size_t index) const {
   RgbdFrame frame;
   frame.stamp_s = pair.colour.stamp_s;
   frame.camera = camera_yaml_.camera;
+  CheckImageFile(folder_ + "/" + pair.colour.path, /*allow_jpeg=*/true);
   frame.colour = cv::imread(folder_ + "/" + pair.colour.path, cv::IMREAD_COLOR);
   if (frame.colour.empty()) {
     throw std::runtime_error("cannot read colour image " + folder_ + "/" + pair.colour.path);

@@ -11,6 +11,10 @@ namespace dslam {
 Trajectory ReadTumTrajectory(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open trajectory " + path);
+  return ParseTumTrajectory(in, path);
+}
+
+Trajectory ParseTumTrajectory(std::istream& in, const std::string& path) {
   Trajectory trajectory;
   std::string line;
   int line_number = 0;
@@ -25,12 +29,16 @@ Trajectory ReadTumTrajectory(const std::string& path) {
                                ": expected 'timestamp tx ty tz qx qy qz qw'");
     }
     Eigen::Quaterniond q(qw, qx, qy, qz);
-    if (!(q.norm() > 1e-6)) {
+    // stableNorm: norm() overflows to infinity for coefficients beyond ~1e154, and the
+    // quaternion then normalised to zero (read as the identity rotation).
+    const double norm = q.coeffs().stableNorm();
+    if (!(norm > 1e-6)) {
       throw std::runtime_error(path + ":" + std::to_string(line_number) + ": zero quaternion");
     }
     StampedPose pose;
     pose.stamp_s = t;
-    pose.T_world_camera.linear() = q.normalized().toRotationMatrix();
+    q.coeffs() /= norm;
+    pose.T_world_camera.linear() = q.toRotationMatrix();
     pose.T_world_camera.translation() = Eigen::Vector3d(x, y, z);
     trajectory.push_back(pose);
   }

@@ -41,6 +41,25 @@ TEST(Config, YamlRejectsUnknownKeysAndBadTypes) {
   EXPECT_THROW(LoadConfigYamlString("dataset: {association_max_dt_s: 5.0}", &config), ConfigError);
 }
 
+TEST(Config, YamlRejectsKeysThatAreNotNames) {
+  // A map or sequence as a key made yaml-cpp's "bad conversion" escape (found by fuzzing).
+  const auto error = [](const std::string& yaml) {
+    Config config;
+    try {
+      LoadConfigYamlString(yaml, &config);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("pose:\n  ? {huber_delta_pixel: 2.4}\n  : 1\n"),
+            "pose: keys must be plain names, got a map as a key");
+  // A NUL in a key ended the message at what() (an empty message).
+  EXPECT_EQ(error("\"\\0pose\": {}\n"), "\\x00pose: unknown config section");  // YAML "\0": NUL
+  EXPECT_EQ(error("? [dataset]\n: {}\n"),
+            "config: keys must be plain names, got a sequence as a key");
+}
+
 TEST(Config, MarkdownListsEveryParameter) {
   const std::string table = DescribeConfigMarkdown();
   EXPECT_NE(table.find("`dataset.association_max_dt_s`"), std::string::npos);

@@ -1,4 +1,5 @@
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,22 @@ TEST(TrajectoryIo, SortsNormalisesAndRejectsBadLines) {
   }
   EXPECT_THROW(ReadTumTrajectory(path), std::runtime_error);
   EXPECT_THROW(ReadTumTrajectory(path + ".missing"), std::runtime_error);
+}
+
+TEST(TrajectoryIo, HugeQuaternionCoefficientsKeepTheirRotation) {
+  // (qx, qw) = (1e200, 1): 180 degrees about x; the norm overflowed and read as the identity.
+  std::istringstream in("0 0 0 0 1e200 0 0 1\n");
+  const Trajectory read = ParseTumTrajectory(in, "huge.txt");
+  ASSERT_EQ(read.size(), 1u);
+  EXPECT_TRUE(read[0].T_world_camera.linear().isApprox(
+      Eigen::Vector3d(1, -1, -1).asDiagonal().toDenseMatrix(), 1e-12));
+  std::istringstream bad("1.0 0 0 0 0 0 x 1\n");
+  try {
+    ParseTumTrajectory(bad, "bad.txt");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.txt:1:"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

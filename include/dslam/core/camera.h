@@ -18,7 +18,9 @@ struct Distortion {
 /// Intrinsics of a pinhole camera plus distortion. Immutable after construction.
 class PinholeCamera {
  public:
-  /// Throws std::invalid_argument for non-positive size or focal length.
+  /// Throws std::invalid_argument for a size outside dslam/core/image_limits.h (CheckImageSize),
+  /// a focal length that is not positive and finite, or a non-finite principal point or
+  /// distortion coefficient.
   PinholeCamera(int width, int height, double fx, double fy, double cx, double cy,
                 const Distortion& distortion = Distortion());
 

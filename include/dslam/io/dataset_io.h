@@ -2,6 +2,7 @@
 // Reading TUM RGB-D layout folders: rgb.txt, depth.txt, groundtruth.txt, rgb/ and depth/ PNGs, and
 // the package's camera.yaml (intrinsics, distortion, depth_scale, groundtruth_correction).
 
+#include <istream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,13 +18,16 @@ enum class GroundTruthCorrection { kNone, kBonn };
 /// Contents of a camera.yaml file.
 struct CameraYaml {
   std::shared_ptr<const PinholeCamera> camera;  ///< intrinsics and distortion of the colour camera
-  double depth_scale = 5000.0;                  ///< depth PNG units per metre (TUM/Bonn: 5000)
+  double depth_scale = 5000.0;  ///< depth PNG units per metre (TUM/Bonn: 5000), in [1, 1e6]
   GroundTruthCorrection groundtruth_correction = GroundTruthCorrection::kNone;
 };
 
 /// Reads camera.yaml (keys width height fx fy cx cy, optional k1 k2 p1 p2 k3 depth_scale
 /// groundtruth_correction none|bonn). Throws std::runtime_error naming the file and the key.
 CameraYaml LoadCameraYaml(const std::string& path);
+
+/// Same as LoadCameraYaml, from the file's text; `name` (the file's name) starts each message.
+CameraYaml ParseCameraYaml(const std::string& yaml_text, const std::string& name);
 
 /// One line of rgb.txt / depth.txt / mask.txt: a stamp and a path relative to the folder.
 struct StampedFile {
@@ -33,6 +37,9 @@ struct StampedFile {
 
 /// Reads a TUM file list ("timestamp filename" lines, '#' comments). Throws on a malformed line.
 std::vector<StampedFile> ReadFileList(const std::string& path);
+
+/// Same as ReadFileList, from a stream; `name` (the file's name) starts each message.
+std::vector<StampedFile> ParseFileList(std::istream& in, const std::string& name);
 
 /// A colour image associated with its nearest depth image.
 struct AssociatedPair {
@@ -61,7 +68,9 @@ class TumDataset {
   std::string groundtruth_path() const { return folder_ + "/groundtruth.txt"; }
   std::string rgb_list_path() const { return folder_ + "/rgb.txt"; }
 
-  /// Loads pair `index`: colour as BGR, depth in metres. Throws std::runtime_error on bad files.
+  /// Loads pair `index`: colour as BGR, depth in metres. Throws std::runtime_error on bad files,
+  /// and before decoding a colour file that is not PNG or JPEG, a depth file that is not PNG, or
+  /// a PNG whose header declares a size beyond dslam/core/image_limits.h (CheckImageFile).
   RgbdFrame LoadFrame(size_t index) const;
 
  private:

@@ -2,6 +2,7 @@
 // Trajectories in TUM format: one pose per line, `timestamp tx ty tz qx qy qz qw`, the pose of the
 // colour camera's optical frame in the world (T_world_camera), stamps in seconds, '#' comments.
 
+#include <istream>
 #include <string>
 
 #include "dslam/core/trajectory.h"
@@ -11,6 +12,9 @@ namespace dslam {
 /// Reads a TUM trajectory file; quaternions are normalised, lines are sorted by stamp.
 /// Throws std::runtime_error naming the file and line on malformed input.
 Trajectory ReadTumTrajectory(const std::string& path);
+
+/// Same as ReadTumTrajectory, from a stream; `name` (the file's name) starts each message.
+Trajectory ParseTumTrajectory(std::istream& in, const std::string& name);
 
 /// Writes `trajectory` in TUM format (stamps with 6 decimals, positions 6, quaternions 7),
 /// with a header comment. Throws std::runtime_error when the file cannot be written.
