@@ -76,6 +76,10 @@ class PoseLevenbergMarquardt {
   void Linearize(const std::vector<bool>& use, const Eigen::Quaterniond& q,
                  const Eigen::Vector3d& t, Linearization* out) const;
 
+  /// Levenberg-Marquardt step in the tangent space for trust-region `radius`, with the Jacobi
+  /// column `scale` fixed at the start of the round.
+  static Vector6d DampedStep(const Linearization& at, const Vector6d& scale, double radius);
+
   const std::vector<PoseObservation>& observations_;
   const std::vector<Eigen::Matrix3d>& sqrt_information_;
   const PinholeCamera& camera_;

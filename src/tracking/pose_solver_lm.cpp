@@ -43,20 +43,18 @@ Eigen::Quaterniond QuaternionPlus(const Eigen::Quaterniond& q, const Eigen::Vect
   return Eigen::Quaterniond(std::cos(norm), v.x(), v.y(), v.z()) * q;
 }
 
-// Ambient-space distance |x - Plus(x, step)|, x = (q coefficients, t).
+// Ambient-space distance between x = (q coefficients, t) and Plus(x, step): the 2-norm, or the
+// max norm when `max_norm` is true.
 double AmbientStepNorm(const Eigen::Quaterniond& q, const Eigen::Matrix<double, 6, 1>& step,
-                       double* max_norm) {
-  const Eigen::Vector4d dq = q.coeffs() - QuaternionPlus(q, step.head<3>()).coeffs();
-  const Eigen::Vector3d dt = step.tail<3>();
-  *max_norm = std::max(dq.lpNorm<Eigen::Infinity>(), dt.lpNorm<Eigen::Infinity>());
-  return std::sqrt(dq.squaredNorm() + dt.squaredNorm());
+                       bool max_norm = false) {
+  Eigen::Matrix<double, 7, 1> d;
+  d << q.coeffs() - QuaternionPlus(q, step.head<3>()).coeffs(), step.tail<3>();
+  return max_norm ? d.lpNorm<Eigen::Infinity>() : d.norm();
 }
 
 // Ceres' gradient test: max |x - Plus(x, -gradient)| <= gradient tolerance.
 bool GradientConverged(const Eigen::Quaterniond& q, const Eigen::Matrix<double, 6, 1>& g) {
-  double max_norm = 0.0;
-  AmbientStepNorm(q, -g, &max_norm);
-  return max_norm <= kGradientTolerance;
+  return AmbientStepNorm(q, -g, true) <= kGradientTolerance;
 }
 
 }  // namespace
@@ -119,6 +117,17 @@ void PoseLevenbergMarquardt::Linearize(const std::vector<bool>& use, const Eigen
   out->g = g;
 }
 
+PoseLevenbergMarquardt::Vector6d PoseLevenbergMarquardt::DampedStep(const Linearization& at,
+                                                                    const Vector6d& scale,
+                                                                    double radius) {
+  // Ceres' LM strategy on the Jacobi-scaled system: (S H S + D / radius) y = -S g with D the
+  // clamped diagonal of S H S; the step is S y.
+  Matrix6d A = scale.asDiagonal() * at.H * scale.asDiagonal();
+  const Vector6d diagonal = A.diagonal().cwiseMax(kMinDiagonal).cwiseMin(kMaxDiagonal);
+  A.diagonal() += diagonal / radius;
+  return scale.cwiseProduct(A.ldlt().solve(-scale.cwiseProduct(at.g)));
+}
+
 PoseRoundSummary PoseLevenbergMarquardt::Solve(const std::vector<bool>& use, Eigen::Quaterniond* q,
                                                Eigen::Vector3d* t) const {
   PoseRoundSummary summary;
@@ -137,10 +146,7 @@ PoseRoundSummary PoseLevenbergMarquardt::Solve(const std::vector<bool>& use, Eig
   // summary.iterations counts as Ceres' Summary::iterations: the start and every completed
   // iteration; an iteration that ends in a tolerance test is not counted.
   for (int iteration = 1; iteration <= config_.max_iterations && !converged; ++iteration) {
-    Matrix6d A = scale.asDiagonal() * current.H * scale.asDiagonal();
-    const Vector6d diagonal = A.diagonal().cwiseMax(kMinDiagonal).cwiseMin(kMaxDiagonal);
-    A.diagonal() += diagonal / radius;
-    const Vector6d step = scale.cwiseProduct(A.ldlt().solve(-scale.cwiseProduct(current.g)));
+    const Vector6d step = DampedStep(current, scale, radius);
     const double model_cost_change = -(step.dot(current.g) + 0.5 * step.dot(current.H * step));
     if (!step.allFinite() || !(model_cost_change > 0.0)) {
       if (++invalid_steps >= kMaxConsecutiveInvalidSteps) return summary;  // not usable
@@ -153,9 +159,7 @@ PoseRoundSummary PoseLevenbergMarquardt::Solve(const std::vector<bool>& use, Eig
     const Eigen::Quaterniond q_candidate = QuaternionPlus(*q, step.head<3>());
     const Eigen::Vector3d t_candidate = *t + step.tail<3>();
     Linearize(use, q_candidate, t_candidate, &candidate);
-    double step_max_norm = 0.0;
-    const double step_norm = AmbientStepNorm(*q, step, &step_max_norm);
-    if (step_norm <= kParameterTolerance * (x_norm + kParameterTolerance)) break;
+    if (AmbientStepNorm(*q, step) <= kParameterTolerance * (x_norm + kParameterTolerance)) break;
     const double cost_change = current.cost - candidate.cost;
     if (std::abs(cost_change) <= kFunctionTolerance * current.cost) break;
     const double relative_decrease = cost_change / model_cost_change;
