@@ -1,6 +1,7 @@
 // dslam_features_bench: median runtime of ORB extraction (640x480, random-block texture with depth)
-// and of the motion-only BA with 300 RGB-D correspondences (20% outliers). OpenCV's thread count
-// (feature detection runs in parallel) is the second argument; the BA is single-threaded.
+// and of the motion-only BA with 300 RGB-D correspondences (20% outliers), once per pose.solver
+// (levenberg_marquardt, ceres; interleaved, so that load changes hit both alike). OpenCV's thread
+// count (feature detection runs in parallel) is the second argument; the BA is single-threaded.
 // Usage: dslam_features_bench [repetitions=30] [threads=1]
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -65,7 +67,7 @@ int main(int argc, char** argv) {
   cv::setNumThreads(threads);
   std::mt19937 rng(1);
   const dslam::RgbdFrame frame = TexturedFrame(&rng);
-  std::vector<double> extract_ms, ba_ms;
+  std::vector<double> extract_ms;
   size_t num_features = 0;
   for (int i = 0; i < reps; ++i) {
     const dslam::Stopwatch watch;
@@ -76,15 +78,24 @@ int main(int argc, char** argv) {
                                Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
   const auto obs = Observations(*frame.camera, T_cw, &rng);
   const Eigen::Isometry3d guess = Eigen::Translation3d(0.03, 0.02, -0.03) * T_cw;
-  int inliers = 0;
+  const std::vector<std::string> solvers = {"levenberg_marquardt", "ceres"};
+  std::vector<std::vector<double>> ba_ms(solvers.size());
+  std::vector<int> inliers(solvers.size(), 0);
   for (int i = 0; i < reps; ++i) {
-    const dslam::Stopwatch watch;
-    inliers = dslam::EstimatePose(obs, guess, *frame.camera, {}).num_inliers;
-    ba_ms.push_back(watch.ElapsedMs());
+    for (size_t k = 0; k < solvers.size(); ++k) {
+      dslam::PoseConfig config;
+      config.solver = solvers[k];
+      const dslam::Stopwatch watch;
+      inliers[k] = dslam::EstimatePose(obs, guess, *frame.camera, config).num_inliers;
+      ba_ms[k].push_back(watch.ElapsedMs());
+    }
   }
   std::printf("ORB extraction 640x480: %zu features, median %.2f ms over %d runs (%d thread%s)\n",
               num_features, dslam::Median(extract_ms), reps, threads, threads == 1 ? "" : "s");
-  std::printf("motion-only BA, 300 correspondences (%d inliers): median %.2f ms over %d runs\n",
-              inliers, dslam::Median(ba_ms), reps);
+  for (size_t k = 0; k < solvers.size(); ++k) {
+    std::printf(
+        "motion-only BA (%s), 300 correspondences (%d inliers): median %.3f ms over %d runs\n",
+        solvers[k].c_str(), inliers[k], dslam::Median(ba_ms[k]), reps);
+  }
   return 0;
 }

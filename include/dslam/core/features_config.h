@@ -3,6 +3,8 @@
 // estimation. Members of the one Config tree (config.h); kept in their own header so that the
 // feature, depth-uncertainty and pose modules can include them without the whole tree.
 
+#include <string>
+
 #include "dslam/core/config_field.h"
 
 namespace dslam {
@@ -64,6 +66,7 @@ struct FeaturesConfig {
 /// Motion-only bundle adjustment (pose_optimizer.h) and its RANSAC initialisation. Units, ranges
 /// and meanings of the fields are given in Fields() (printed by `dslam_config_doc`).
 struct PoseConfig {
+  std::string solver = "levenberg_marquardt";
   double huber_delta_depth = 2.796;
   double huber_delta_pixel = 2.448;
   double chi2_depth = 7.815;
@@ -76,6 +79,11 @@ struct PoseConfig {
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
+    // levenberg_marquardt: the 6-dof solver of pose_optimizer.cpp (6x6 normal equations, Huber
+    // by iteratively reweighted least squares); ceres: the same cost solved by Ceres.
+    v(Choice("solver", {"levenberg_marquardt", "ceres"},
+             "motion-only BA solver: levenberg_marquardt or ceres"),
+      s.solver);
     v(Field("huber_delta_depth", "-", 0.1, 100.0, "Huber width, whitened 3-dof residual"),
       s.huber_delta_depth);
     v(Field("huber_delta_pixel", "-", 0.1, 100.0, "Huber width, whitened 2-dof residual"),
