@@ -8,6 +8,9 @@
 
 namespace dslam {
 
+const char kTumTrajectoryHeader[] =
+    "# timestamp tx ty tz qx qy qz qw (T_world_camera, camera optical frame)\n";
+
 Trajectory ReadTumTrajectory(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot open trajectory " + path);
@@ -60,7 +63,7 @@ std::string FormatTumLine(const StampedPose& pose) {
 void WriteTumTrajectory(const std::string& path, const Trajectory& trajectory) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write trajectory " + path);
-  out << "# timestamp tx ty tz qx qy qz qw (T_world_camera, camera optical frame)\n";
+  out << kTumTrajectoryHeader;
   for (const StampedPose& pose : trajectory) out << FormatTumLine(pose) << "\n";
   if (!out) throw std::runtime_error("error while writing trajectory " + path);
 }

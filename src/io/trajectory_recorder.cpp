@@ -1,6 +1,7 @@
 #include "dslam/io/trajectory_recorder.h"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
@@ -11,8 +12,6 @@
 namespace dslam {
 namespace fs = std::filesystem;
 namespace {
-
-const char kHeader[] = "# timestamp tx ty tz qx qy qz qw (T_world_camera, camera optical frame)\n";
 
 /// Copies the first `bytes` bytes of `from` (already open) to the file `to`.
 void CopyBytes(std::ifstream& from, std::uintmax_t bytes, const std::string& from_path,
@@ -87,8 +86,8 @@ void TrajectoryRecorder::OpenStream() {
   stream_.clear();
   stream_.open(stream_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw std::runtime_error("cannot write the trajectory stream " + stream_path_);
-  stream_ << kHeader << std::flush;
-  segment_bytes_.back() = sizeof(kHeader) - 1;
+  stream_ << kTumTrajectoryHeader << std::flush;
+  segment_bytes_.back() = std::strlen(kTumTrajectoryHeader);
 }
 
 void TrajectoryRecorder::Add(const StampedPose& pose) {

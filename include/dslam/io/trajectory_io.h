@@ -20,6 +20,9 @@ Trajectory ParseTumTrajectory(std::istream& in, const std::string& name);
 /// with a header comment. Throws std::runtime_error when the file cannot be written.
 void WriteTumTrajectory(const std::string& path, const Trajectory& trajectory);
 
+/// The comment line (with its newline) that begins every trajectory file dslam writes.
+extern const char kTumTrajectoryHeader[];
+
 /// Formats one pose as a TUM line without newline.
 std::string FormatTumLine(const StampedPose& pose);
 
