@@ -1,5 +1,5 @@
 #pragma once
-// dslam_run_dataset --objects: the moving objects of every frame (MovingObjects, part mapping)
+// dslam_run_dataset --objects: the moving objects of every frame (MovingObjectTracker, part mapping)
 // and their file, one line per frame and reported object:
 //   timestamp id x y z vx vy vz ex ey ez
 // [s], [-], position [m], velocity [m/s] and full extent [m], all in the trajectory's frame (the
@@ -12,13 +12,13 @@
 
 #include "dslam/core/config.h"
 #include "dslam/core/rgbd_frame.h"
-#include "dslam/mapping/moving_objects.h"
+#include "dslam/mapping/moving_object_tracker.h"
 #include "dslam/tracking/frame_result.h"
 
 namespace dslam {
 namespace tools {
 
-/// Runs MovingObjects on each frame and writes the objects file; times each frame's work.
+/// Runs MovingObjectTracker on each frame and writes the objects file; times each frame's work.
 class ObjectsOutput {
  public:
   /// Opens `path` and writes the header; throws std::runtime_error when it cannot.
@@ -37,7 +37,7 @@ class ObjectsOutput {
  private:
   std::string path_;
   std::ofstream out_;
-  MovingObjects objects_;
+  MovingObjectTracker objects_;
   std::vector<double> times_ms_;
   int object_frames_ = 0;
 };

@@ -1,13 +1,13 @@
-#include "dslam/mapping/moving_objects.h"
+#include "dslam/mapping/moving_object_tracker.h"
 
 namespace dslam {
 
-MovingObjects::MovingObjects(const Config& config)
+MovingObjectTracker::MovingObjectTracker(const Config& config)
     : mask_config_(config.dynamic_mask),
       objects_config_(config.objects),
       tracker_(config.objects) {}
 
-std::vector<TrackedObject> MovingObjects::Process(const RgbdFrame& frame,
+std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
                                                   const FrameResult& result) {
   if (result.reset) tracker_.Reset();
   if (!result.has_pose) return {};

@@ -15,10 +15,10 @@
 namespace dslam {
 
 /// Dynamic mask and object tracking, frame by frame (one thread).
-class MovingObjects {
+class MovingObjectTracker {
  public:
   /// Uses config.dynamic_mask and config.objects (validated by the caller's Config::Validate).
-  explicit MovingObjects(const Config& config);
+  explicit MovingObjectTracker(const Config& config);
 
   /// The objects of `frame` from its `result` (result.points must be filled: FrameRequest
   /// points). Lost frames (no pose) return nothing and leave the tracks as they are; a reset
