@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dslam/eval/estimate_frame.h"
 #include "dslam/eval/object_metrics.h"
 
 namespace dslam {
@@ -140,6 +141,20 @@ TEST(ObjectFiles, ParsesLinesAndRejectsBadOnes) {
   std::istringstream not_finite("5 3 nan 2 3 4 5 6 0.1\n");
   EXPECT_THROW(ParseTruthObjects(not_finite, "objects.txt"), std::runtime_error);
   EXPECT_THROW(ReadTruthObjects("/nonexistent/objects.txt"), std::runtime_error);
+}
+
+TEST(EstimateFrame, FirstFramePoseOrTheEstimatesFirstPose) {
+  const Eigen::Isometry3d T = SomeEstimateFrame();
+  Trajectory groundtruth = StaticCamera(3);
+  groundtruth[1].T_world_camera = T;
+  groundtruth[2].T_world_camera.translation() = Eigen::Vector3d(0.0, 0.0, 1.0);
+  EXPECT_TRUE(EstimateFrameInWorld(groundtruth, 0.1001, {}, 0.005).isApprox(T));
+  EXPECT_THROW(EstimateFrameInWorld(groundtruth, 0.15, {}, 0.005), std::runtime_error);
+  // Tracking began at frame 1 with the pose P in the estimate's frame: the frame is T P^-1.
+  Eigen::Isometry3d P = Eigen::Isometry3d::Identity();
+  P.translation() = Eigen::Vector3d(0.5, 0.0, 0.0);
+  const Trajectory estimated = {{0.2, P * P}, {0.1, P}};  // unsorted on purpose
+  EXPECT_TRUE(EstimateFrameInWorld(groundtruth, 0.0, estimated, 0.005).isApprox(T * P.inverse()));
 }
 
 }  // namespace
