@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "dslam/eval/estimate_frame.h"
 #include "dslam/eval/json_writer.h"
 #include "dslam/eval/object_metrics.h"
+#include "dslam/eval/trajectory_metrics.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
 

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "dslam/eval/estimate_frame.h"
 #include "dslam/eval/object_metrics.h"
+#include "dslam/eval/trajectory_metrics.h"
 
 namespace dslam {
 namespace {
