@@ -9,6 +9,7 @@
 #include "dslam/core/backend_config.h"
 #include "dslam/core/config_field.h"
 #include "dslam/core/features_config.h"
+#include "dslam/core/map_config.h"
 #include "dslam/core/static_points_config.h"
 #include "dslam/core/tracking_config.h"
 
@@ -36,6 +37,7 @@ struct Config {
   StaticPointsConfig static_points;  ///< static point determination (static_points_config.h)
   TrackingConfig tracking;           ///< local map, keyframes, recovery (tracking_config.h)
   BackendConfig backend;             ///< local mapping after keyframes (backend_config.h)
+  MapConfig map;                     ///< the static map (map_config.h)
 
   /// Calls `f(name, section)` for every section, in documentation order.
   template <typename Self, typename F>
@@ -47,6 +49,7 @@ struct Config {
     f("static_points", s.static_points);
     f("tracking", s.tracking);
     f("backend", s.backend);
+    f("map", s.map);
   }
 
   /// Throws ConfigError naming the first out-of-range or inconsistent parameter.
