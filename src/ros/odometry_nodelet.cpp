@@ -43,6 +43,7 @@ void OdometryNodelet::onInit() {
   }
   stamps_ = std::make_unique<StampCheck>(config.tracking.max_prediction_gap_s);
   publisher_ = std::make_unique<FramePublisher>(nh, config_);
+  objects_publisher_ = std::make_unique<ObjectsPublisher>(nh, slam_->config());
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
   static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();

@@ -31,7 +31,7 @@ void OdometryNodelet::Process(const Input& input) {
   }
   const bool service_reset = ApplyRequestedReset();
   FrameRequest request;
-  request.points = publisher_->WantsPoints();
+  request.points = publisher_->WantsPoints() || objects_publisher_->Wanted();
   request.edges = publisher_->WantsEdges();
   FrameResult result = slam_->ProcessFrame(frame, request);
   ++processed_;
@@ -106,6 +106,9 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
   const Eigen::Isometry3d& T_base_camera = CameraMount(header.frame_id, header.stamp);
   const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
   publisher_->Publish(result, frame, header, T_base_camera, Counters(), latency_ms);
+  std_msgs::Header odom_header = header;
+  odom_header.frame_id = config_.odom_frame;
+  objects_publisher_->Publish(frame, result, odom_header, T_base_camera);
 }
 
 FrameCounters OdometryNodelet::Counters() const {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -24,12 +25,14 @@
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "objects_output.h"
 
 namespace {
 
 struct Args {
   std::string dataset, camera, trajectory, status, config, summary, segmentation;
   std::string refined_trajectory;  ///< every frame on its reference keyframe after the last BA
+  std::string objects;             ///< moving objects file (objects_output.h)
   std::string static_points;       ///< "on", "off" or empty (the config's static_points.enabled)
   std::string backend;             ///< "on", "off" or empty (the config's backend.enabled)
   int max_frames = -1;
@@ -46,7 +49,8 @@ int Usage() {
                "[--backend on|off] [--config params.yaml]\n"
                "                         [--summary OUT.json] [--segmentation OUT.csv] "
                "[--max-frames N] [--quiet]\n"
-               "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n";
+               "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
+               "                         [--objects OUT.txt]\n";
   return 2;
 }
 
@@ -69,6 +73,8 @@ bool Parse(int argc, char** argv, Args* args) {
       args->camera = value;
     else if (key == "--trajectory")
       args->trajectory = value;
+    else if (key == "--objects")
+      args->objects = value;
     else if (key == "--refined-trajectory")
       args->refined_trajectory = value;
     else if (key == "--status")
@@ -150,10 +156,9 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
       .AddNumber("p95_tracking_ms", summary.TrackingQuantile(0.95), kDigits)
       .AddInteger("backend_runs", summary.backend_runs())
       .AddInteger("max_backlog", summary.max_backlog());
-  for (const char* field :
-       {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations", "spd_ms",
-        "spd_graph_ms", "spd_culling_ms", "spd_components_ms", "spd_points", "spd_edges",
-        "spd_culled_edges", "spd_unmarked"}) {
+  for (const char* field : {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations",
+                            "spd_ms", "spd_graph_ms", "spd_culling_ms", "spd_components_ms",
+                            "spd_points", "spd_edges", "spd_culled_edges", "spd_unmarked"}) {
     json.AddNumber(std::string("median_") + field, summary.BackEndQuantile(field, 0.5), kDigits)
         .AddNumber(std::string("p95_") + field, summary.BackEndQuantile(field, 0.95), kDigits);
   }
@@ -177,11 +182,15 @@ struct Outputs {
   dslam::SegmentationScore score;
   std::map<double, std::string> masks;  ///< mask image by colour stamp; empty: not synthetic
   std::ofstream status, segmentation;   ///< the CSVs asked for (closed when not)
+  std::unique_ptr<dslam::tools::ObjectsOutput> objects;  ///< --objects
 };
 
 // Reads the masks and opens the CSVs the arguments ask for, with their headers.
-void OpenOutputs(const Args& args, Outputs* out) {
+void OpenOutputs(const Args& args, const dslam::Config& config, Outputs* out) {
   out->masks = ReadMasks(args.dataset);
+  if (!args.objects.empty()) {
+    out->objects = std::make_unique<dslam::tools::ObjectsOutput>(args.objects, config);
+  }
   if (!args.status.empty()) {
     out->status.open(args.status);
     out->status << dslam::StatusCsvHeader() << "\n";
@@ -222,6 +231,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
                                         std::chrono::duration<double>(i / args.rate_hz)));
     }
     const dslam::FrameResult r = slam->ProcessFrame(frame);
+    if (out->objects) out->objects->Add(frame, r);
     Record(args, r, out);
     if (!args.quiet) Progress(i + 1, n, r);
   }
@@ -265,16 +275,27 @@ int Run(const Args& args) {
   dslam::Slam slam(config,
                    args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous);
   Outputs out;
-  OpenOutputs(args, &out);
+  OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
+  if (out.objects) out.objects->Close();
   dslam::WriteTumTrajectory(args.trajectory, out.trajectory);
   if (!args.refined_trajectory.empty()) {
     dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
   }
   PrintReport(args, config, out);
+  if (out.objects) {
+    std::printf("objects: %d object-frames, median %.2f ms/frame (mask and tracking) -> %s\n",
+                out.objects->object_frames(), dslam::Median(out.objects->times_ms()),
+                args.objects.c_str());
+  }
   if (!args.summary.empty()) {
-    dslam::WriteJsonFile(args.summary,
-                         SummaryJson(out.summary, out.score, !out.masks.empty(), config, args));
+    dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
+    if (out.objects) {  // the tracking thread's extra time per frame for --objects
+      json.AddNumber("median_objects_ms", dslam::Median(out.objects->times_ms()), 6)
+          .AddNumber("p95_objects_ms", dslam::Quantile(out.objects->times_ms(), 0.95), 6)
+          .AddInteger("object_frames", out.objects->object_frames());
+    }
+    dslam::WriteJsonFile(args.summary, json);
   }
   return 0;
 }

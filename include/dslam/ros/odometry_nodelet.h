@@ -39,6 +39,7 @@
 #include "dslam/ros/frame_publisher.h"
 #include "dslam/ros/input_checks.h"
 #include "dslam/ros/latest_slot.h"
+#include "dslam/ros/objects_publisher.h"
 #include "dslam/ros/node_config.h"
 
 namespace dslam {
@@ -95,6 +96,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   // own back-end thread, stopped and joined when slam_ is destroyed, after worker_).
   std::unique_ptr<Slam> slam_;
   std::unique_ptr<FramePublisher> publisher_;  // used by the worker only
+  std::unique_ptr<ObjectsPublisher> objects_publisher_;  // used by the worker only
   std::unique_ptr<StampCheck> stamps_;         // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;

@@ -1,0 +1,89 @@
+#pragma once
+// Config sections `dynamic_mask` (per-pixel masks of the moving things, grown from the unmarked
+// points over the depth image) and `objects` (moving objects tracked across frames). Members of
+// the one Config tree (config.h).
+
+#include "dslam/core/config_field.h"
+
+namespace dslam {
+
+/// Per-pixel dynamic mask (dslam/mapping/dynamic_mask.h): the frame's unmarked points are
+/// clustered in 3D, and each cluster grows over the depth image across depth-continuous
+/// neighbours, staying within a margin of the cluster's points. Units, ranges and meanings of the
+/// fields are given in Fields() (printed by `dslam_config_doc`).
+struct DynamicMaskConfig {
+  int decimation = 4;
+  double cluster_distance_m = 0.35;
+  int min_cluster_points = 4;
+  double depth_step_m = 0.03;
+  double depth_step_ratio = 0.02;
+  double margin_m = 0.25;
+  double max_depth_m = 6.0;
+
+  template <typename Self, typename Visitor>
+  static void Fields(Self& s, Visitor&& v) {
+    // The mask is computed on every decimation-th pixel in both directions (4: 160x120 cells at
+    // 640x480), a cell's depth being the depth at its centre pixel.
+    v(Field("decimation", "px", 1, 16, "mask cell size (pixels per cell side)"), s.decimation);
+    // Single-linkage clustering of the unmarked points: a person's points are closer than this to
+    // a neighbour of the same person.
+    v(Field("cluster_distance_m", "m", 0.01, 5.0,
+            "unmarked points closer than this belong to the same moving thing"),
+      s.cluster_distance_m);
+    v(Field("min_cluster_points", "-", 1, 10000,
+            "clusters with fewer unmarked points are left out (isolated mislabels)"),
+      s.min_cluster_points);
+    // Neighbouring cells are depth-continuous when their depths differ by at most
+    // depth_step_m + depth_step_ratio * depth (noise and slant grow with depth).
+    v(Field("depth_step_m", "m", 0.0, 1.0, "depth continuity: constant part"), s.depth_step_m);
+    v(Field("depth_step_ratio", "-", 0.0, 1.0, "depth continuity: part proportional to depth"),
+      s.depth_step_ratio);
+    // Growth stops this far outside the axis-aligned box (optical frame) of the cluster's points:
+    // a person's region does not run into the floor or a wall it touches beyond this margin.
+    v(Field("margin_m", "m", 0.0, 5.0, "how far a region may grow beyond its points' box"),
+      s.margin_m);
+    v(Field("max_depth_m", "m", 0.1, 100.0, "cells farther than this are never masked"),
+      s.max_depth_m);
+  }
+};
+
+/// Moving objects (dslam/mapping/object_tracker.h): each masked region with enough points is an
+/// observation; observations are associated with tracks by position and colour and filtered with
+/// a constant-velocity Kalman filter. Units, ranges and meanings of the fields are given in
+/// Fields() (printed by `dslam_config_doc`).
+struct ObjectsConfig {
+  bool enabled = true;
+  int min_points = 6;
+  int min_cells = 20;
+  double gate_m = 0.6;
+  double colour_weight_m = 0.3;
+  double acceleration_sigma_mps2 = 3.0;
+  double position_sigma_m = 0.08;
+  int min_hits = 3;
+  double max_unseen_s = 1.0;
+
+  template <typename Self, typename Visitor>
+  static void Fields(Self& s, Visitor&& v) {
+    v(Flag("enabled", "detect and track moving objects"), s.enabled);
+    v(Field("min_points", "-", 1, 10000, "unmarked points a region needs to become an observation"),
+      s.min_points);
+    v(Field("min_cells", "-", 1, 1000000, "mask cells a region needs to become an observation"),
+      s.min_cells);
+    // Association cost = predicted-position distance + colour_weight_m * colour distance (0..1);
+    // pairs costing more than gate_m are never associated.
+    v(Field("gate_m", "m", 0.01, 10.0, "largest association cost"), s.gate_m);
+    v(Field("colour_weight_m", "m", 0.0, 10.0, "cost of a full colour mismatch"),
+      s.colour_weight_m);
+    v(Field("acceleration_sigma_mps2", "m/s^2", 0.01, 100.0,
+            "constant-velocity filter: white acceleration noise"),
+      s.acceleration_sigma_mps2);
+    v(Field("position_sigma_m", "m", 0.001, 10.0, "noise of an observed centroid"),
+      s.position_sigma_m);
+    // A track is reported from its min_hits-th observation on: single-frame mislabels are not.
+    v(Field("min_hits", "-", 1, 1000, "observations before a track is reported"), s.min_hits);
+    v(Field("max_unseen_s", "s", 0.0, 60.0, "a track unseen for longer is dropped"),
+      s.max_unseen_s);
+  }
+};
+
+}  // namespace dslam

@@ -1,0 +1,41 @@
+#pragma once
+// The moving objects of each frame, from its FrameResult: the dynamic mask (dynamic_mask.h) of
+// the frame's unmarked points, its regions as observations, and the tracker (object_tracker.h).
+// Runs on the thread that consumes FrameResults (the tracking thread of dslam_run_dataset, the
+// node's worker), after Slam::ProcessFrame.
+
+#include <vector>
+
+#include "dslam/core/config.h"
+#include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/dynamic_mask.h"
+#include "dslam/mapping/object_tracker.h"
+#include "dslam/tracking/frame_result.h"
+
+namespace dslam {
+
+/// Dynamic mask and object tracking, frame by frame (one thread).
+class MovingObjectTracker {
+ public:
+  /// Uses config.dynamic_mask and config.objects (validated by the caller's Config::Validate).
+  explicit MovingObjectTracker(const Config& config);
+
+  /// The objects of `frame` from its `result` (result.points must be filled: FrameRequest
+  /// points). Lost frames (no pose) return nothing and leave the tracks as they are; a reset
+  /// result (FrameResult::reset) forgets them first.
+  std::vector<TrackedObject> Process(const RgbdFrame& frame, const FrameResult& result);
+
+  /// The dynamic mask of the last frame Process was given with a pose (empty before).
+  const DynamicMask& last_mask() const { return mask_; }
+
+  /// Forgets the tracks (Slam::Reset).
+  void Reset() { tracker_.Reset(); }
+
+ private:
+  DynamicMaskConfig mask_config_;
+  ObjectsConfig objects_config_;
+  ObjectTracker tracker_;
+  DynamicMask mask_;
+};
+
+}  // namespace dslam

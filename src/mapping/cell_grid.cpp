@@ -1,0 +1,133 @@
+#include "cell_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dslam {
+
+CellGrid::CellGrid(const RgbdFrame& frame, const DynamicMaskConfig& config)
+    : frame_(frame),
+      decimation_(config.decimation),
+      rows_(frame.depth_m.rows / config.decimation),
+      cols_(frame.depth_m.cols / config.decimation),
+      step_m_(config.depth_step_m),
+      step_ratio_(config.depth_step_ratio),
+      max_depth_m_(config.max_depth_m),
+      depth_(static_cast<size_t>(rows_) * cols_, 0.0),
+      points_(depth_.size()),
+      has_point_(depth_.size(), 0) {
+  const int half = decimation_ / 2;
+  for (int r = 0; r < rows_; ++r) {
+    for (int c = 0; c < cols_; ++c) {
+      depth_[r * cols_ + c] = PixelDepth(c * decimation_ + half, r * decimation_ + half);
+    }
+  }
+}
+
+int CellGrid::CellOf(int u, int v) const {
+  const int r = v / decimation_, c = u / decimation_;
+  return (u >= 0 && v >= 0 && Inside(r, c)) ? r * cols_ + c : -1;
+}
+
+double CellGrid::PixelDepth(int u, int v) const {
+  if (u < 0 || v < 0 || u >= frame_.depth_m.cols || v >= frame_.depth_m.rows) return 0.0;
+  const float z = frame_.depth_m.at<float>(v, u);
+  return (std::isfinite(z) && z > 0.0f && z <= max_depth_m_) ? z : 0.0;
+}
+
+Eigen::Vector3d CellGrid::BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const {
+  const PinholeCamera& camera = *frame_.camera;
+  const Eigen::Vector2d uv = camera.distortion().IsZero() ? uv_raw : camera.Undistort(uv_raw);
+  return camera.BackProject(uv, z);
+}
+
+const Eigen::Vector3d& CellGrid::CellPoint(int cell) const {
+  if (!has_point_[cell]) {
+    const int half = decimation_ / 2;
+    const Eigen::Vector2d uv((cell % cols_) * decimation_ + half,
+                             (cell / cols_) * decimation_ + half);
+    points_[cell] = BackProjectPixel(uv, depth_[cell]);
+    has_point_[cell] = 1;
+  }
+  return points_[cell];
+}
+
+Eigen::Vector3d CellGrid::CellColour(int cell) const {
+  const int half = decimation_ / 2;
+  const int u = (cell % cols_) * decimation_ + half, v = (cell / cols_) * decimation_ + half;
+  if (frame_.colour.type() == CV_8UC3) {
+    const cv::Vec3b bgr = frame_.colour.at<cv::Vec3b>(v, u);
+    return Eigen::Vector3d(bgr[0], bgr[1], bgr[2]) / 255.0;
+  }
+  return Eigen::Vector3d::Constant(frame_.colour.at<uint8_t>(v, u) / 255.0);
+}
+
+DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
+                         const Eigen::Isometry3d& T_world_camera,
+                         const std::vector<uint8_t>& blocked, cv::Mat* labels,
+                         std::vector<uint16_t>* touched) {
+  DynamicRegion region;
+  region.label = seeds.label;
+  region.points = seeds.points;
+  const Eigen::Vector3d box_min = seeds.box_min.array() - seeds.margin_m;
+  const Eigen::Vector3d box_max = seeds.box_max.array() + seeds.margin_m;
+  auto* label = labels->ptr<uint16_t>();
+  std::vector<int> queue;
+  for (int cell : seeds.cells) {
+    if (label[cell] != 0) continue;
+    label[cell] = seeds.label;
+    queue.push_back(cell);
+  }
+  Eigen::Vector3d sum_world = Eigen::Vector3d::Zero(), sum_colour = Eigen::Vector3d::Zero();
+  region.min_world = Eigen::Vector3d::Constant(1e300);
+  region.max_world = Eigen::Vector3d::Constant(-1e300);
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int cell = queue[head];
+    const Eigen::Vector3d p_world = T_world_camera * grid.CellPoint(cell);
+    sum_world += p_world;
+    sum_colour += grid.CellColour(cell);
+    region.min_world = region.min_world.cwiseMin(p_world);
+    region.max_world = region.max_world.cwiseMax(p_world);
+    const int r = cell / grid.cols(), c = cell % grid.cols();
+    const int neighbours[4][2] = {{r - 1, c}, {r + 1, c}, {r, c - 1}, {r, c + 1}};
+    for (const auto& rc : neighbours) {
+      if (!grid.Inside(rc[0], rc[1])) continue;
+      const int next = rc[0] * grid.cols() + rc[1];
+      const double z = grid.CellDepth(next);
+      if (label[next] == seeds.label || blocked[next] || z <= 0.0) continue;
+      if (std::abs(z - grid.CellDepth(cell)) > grid.DepthStep(z)) continue;
+      if (label[next] != 0) {
+        if (std::find(touched->begin(), touched->end(), label[next]) == touched->end()) {
+          touched->push_back(label[next]);
+        }
+        continue;
+      }
+      const Eigen::Vector3d& p = grid.CellPoint(next);
+      if ((p.array() < box_min.array()).any() || (p.array() > box_max.array()).any()) continue;
+      label[next] = seeds.label;
+      queue.push_back(next);
+    }
+  }
+  region.cells = static_cast<int>(queue.size());
+  if (region.cells > 0) {
+    region.centroid_world = sum_world / region.cells;
+    region.mean_colour = sum_colour / region.cells;
+  }
+  return region;
+}
+
+void MergeRegion(const DynamicRegion& from, DynamicRegion* into, cv::Mat* labels) {
+  const int cells = from.cells + into->cells;
+  if (cells > 0) {
+    into->centroid_world =
+        (from.centroid_world * from.cells + into->centroid_world * into->cells) / cells;
+    into->mean_colour = (from.mean_colour * from.cells + into->mean_colour * into->cells) / cells;
+  }
+  into->min_world = into->min_world.cwiseMin(from.min_world);
+  into->max_world = into->max_world.cwiseMax(from.max_world);
+  into->cells = cells;
+  into->points.insert(into->points.end(), from.points.begin(), from.points.end());
+  labels->setTo(into->label, *labels == from.label);
+}
+
+}  // namespace dslam

@@ -1,0 +1,74 @@
+#pragma once
+// Internal to dynamic_mask.cpp: the decimated depth grid the dynamic mask is grown on, and the
+// region growing itself.
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "dslam/core/objects_config.h"
+#include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/dynamic_mask.h"
+
+namespace dslam {
+
+/// Cells of decimation x decimation pixels over one frame; a cell's depth and colour are those
+/// of its centre pixel. Back-projected cell points are computed on first use and cached.
+class CellGrid {
+ public:
+  CellGrid(const RgbdFrame& frame, const DynamicMaskConfig& config);
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  int size() const { return rows_ * cols_; }
+  bool Inside(int r, int c) const { return r >= 0 && c >= 0 && r < rows_ && c < cols_; }
+
+  /// Cell index of pixel (u, v) [px], -1 outside the grid.
+  int CellOf(int u, int v) const;
+  /// [m] valid depth of pixel (u, v) (within max_depth_m), 0 when missing or outside.
+  double PixelDepth(int u, int v) const;
+  /// [m] depth of a cell's centre pixel, 0 when missing.
+  double CellDepth(int cell) const { return depth_[cell]; }
+  /// [m] largest depth difference of continuous neighbours at depth z [m].
+  double DepthStep(double z) const { return step_m_ + step_ratio_ * z; }
+  /// [m] raw pixel `uv_raw` [px] at depth `z` [m] in the optical frame (undistorted first).
+  Eigen::Vector3d BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const;
+  /// [m] the cell's centre point in the optical frame (its depth must be valid).
+  const Eigen::Vector3d& CellPoint(int cell) const;
+  /// [0, 1] the cell's centre colour (B, G, R).
+  Eigen::Vector3d CellColour(int cell) const;
+
+ private:
+  const RgbdFrame& frame_;
+  int decimation_, rows_, cols_;
+  double step_m_, step_ratio_, max_depth_m_;
+  std::vector<double> depth_;
+  mutable std::vector<Eigen::Vector3d> points_;
+  mutable std::vector<uint8_t> has_point_;
+};
+
+/// What one region grows from.
+struct RegionSeeds {
+  uint16_t label = 0;
+  std::vector<int> cells;            ///< seed cells (may repeat)
+  std::vector<PointId> points;       ///< the points of the cluster
+  Eigen::Vector3d box_min, box_max;  ///< [m] box of the cluster's points, optical frame
+  double margin_m = 0.0;             ///< [m] how far the region may grow beyond the box
+};
+
+/// Grows one region (breadth first, 4-neighbours, depth-continuous, within margin_m of the
+/// seeds' box, never into `blocked` cells or cells already labelled) and writes its label into
+/// `labels`; returns its statistics in the world frame of `T_world_camera`. `touched` receives
+/// the labels of earlier regions it met across a depth-continuous cell border (the same surface).
+DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
+                         const Eigen::Isometry3d& T_world_camera,
+                         const std::vector<uint8_t>& blocked, cv::Mat* labels,
+                         std::vector<uint16_t>* touched);
+
+/// Adds region `from` to region `into` (statistics, points); relabels from's cells in `labels`.
+void MergeRegion(const DynamicRegion& from, DynamicRegion* into, cv::Mat* labels);
+
+}  // namespace dslam

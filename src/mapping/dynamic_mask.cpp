@@ -1,0 +1,177 @@
+#include "dslam/mapping/dynamic_mask.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <Eigen/Geometry>
+
+#include "cell_grid.h"
+
+namespace dslam {
+namespace {
+
+/// An unmarked point measured again in this frame.
+struct MovingPoint {
+  PointId id = -1;
+  Eigen::Vector3d p_camera;  ///< [m] optical frame, from this frame's depth
+  int cell = -1;             ///< its cell index in the grid
+};
+
+std::vector<MovingPoint> MeasureUnmarkedPoints(const CellGrid& grid,
+                                               const std::vector<ObservedPoint>& points) {
+  std::vector<MovingPoint> moving;
+  for (const ObservedPoint& point : points) {
+    if (point.is_static) continue;
+    const int u = static_cast<int>(std::lround(point.uv_raw.x()));
+    const int v = static_cast<int>(std::lround(point.uv_raw.y()));
+    const double z = grid.PixelDepth(u, v);
+    if (z <= 0.0) continue;
+    moving.push_back({point.id, grid.BackProjectPixel(point.uv_raw, z), grid.CellOf(u, v)});
+  }
+  return moving;
+}
+
+/// The axis-aligned box of a cluster's points, optical frame [m].
+Eigen::AlignedBox3d BoxOf(const std::vector<MovingPoint>& points, const std::vector<int>& members) {
+  Eigen::AlignedBox3d box;
+  for (int i : members) box.extend(points[i].p_camera);
+  return box;
+}
+
+/// Merges clusters whose boxes, grown by `margin_m`, intersect (the parts of one person that
+/// single linkage split where its points are sparse), until no two do.
+void MergeOverlappingClusters(const std::vector<MovingPoint>& points, double margin_m,
+                              std::vector<std::vector<int>>* clusters) {
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (size_t a = 0; a < clusters->size() && !merged; ++a) {
+      Eigen::AlignedBox3d box_a = BoxOf(points, (*clusters)[a]);
+      box_a.min().array() -= margin_m;
+      box_a.max().array() += margin_m;
+      for (size_t b = a + 1; b < clusters->size() && !merged; ++b) {
+        if (!box_a.intersects(BoxOf(points, (*clusters)[b]))) continue;
+        auto& target = (*clusters)[a];
+        target.insert(target.end(), (*clusters)[b].begin(), (*clusters)[b].end());
+        clusters->erase(clusters->begin() + b);
+        merged = true;
+      }
+    }
+  }
+}
+
+int FindRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+/// Single-linkage clusters of the points (indices into `points`), largest first.
+std::vector<std::vector<int>> ClusterPoints(const std::vector<MovingPoint>& points,
+                                            double distance_m, double margin_m, int min_points) {
+  const int n = static_cast<int>(points.size());
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  const double distance2 = distance_m * distance_m;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if ((points[i].p_camera - points[j].p_camera).squaredNorm() <= distance2) {
+        parent[FindRoot(parent, i)] = FindRoot(parent, j);
+      }
+    }
+  }
+  std::vector<std::vector<int>> by_root(n);
+  for (int i = 0; i < n; ++i) by_root[FindRoot(parent, i)].push_back(i);
+  std::vector<std::vector<int>> clusters;
+  for (auto& members : by_root) {
+    if (!members.empty()) clusters.push_back(std::move(members));
+  }
+  MergeOverlappingClusters(points, margin_m, &clusters);
+  clusters.erase(std::remove_if(clusters.begin(), clusters.end(),
+                                [&](const std::vector<int>& c) {
+                                  return static_cast<int>(c.size()) < min_points;
+                                }),
+                 clusters.end());
+  std::stable_sort(clusters.begin(), clusters.end(),
+                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  return clusters;
+}
+
+/// The cell of `point` or, when that cell's depth is not continuous with the point's (a keypoint
+/// on a depth edge), the 8-neighbour whose depth is closest and continuous; -1 when none is.
+int SeedCell(const CellGrid& grid, const MovingPoint& point) {
+  const double z = point.p_camera.z();
+  int best = -1;
+  double best_dz = grid.DepthStep(z);
+  const int r0 = point.cell / grid.cols(), c0 = point.cell % grid.cols();
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      const int r = r0 + dr, c = c0 + dc;
+      if (!grid.Inside(r, c)) continue;
+      const double dz = std::abs(grid.CellDepth(r * grid.cols() + c) - z);
+      if (grid.CellDepth(r * grid.cols() + c) > 0.0 && dz <= best_dz &&
+          (best == -1 || dz < best_dz || (dr == 0 && dc == 0))) {
+        best = r * grid.cols() + c;
+        best_dz = dz;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+uint16_t DynamicMask::LabelAt(int u, int v) const {
+  if (labels.empty() || u < 0 || v < 0) return 0;
+  const int r = v / decimation, c = u / decimation;
+  if (r >= labels.rows || c >= labels.cols) return 0;
+  return labels.at<uint16_t>(r, c);
+}
+
+double DynamicMask::MaskedShare() const {
+  if (labels.empty()) return 0.0;
+  return static_cast<double>(cv::countNonZero(labels)) / static_cast<double>(labels.total());
+}
+
+DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
+                               const std::vector<ObservedPoint>& points,
+                               const DynamicMaskConfig& config) {
+  const CellGrid grid(frame, config);
+  DynamicMask mask;
+  mask.decimation = config.decimation;
+  mask.labels = cv::Mat::zeros(grid.rows(), grid.cols(), CV_16UC1);
+  std::vector<uint8_t> blocked(grid.size(), 0);
+  for (const ObservedPoint& point : points) {
+    if (!point.is_static || point.is_candidate) continue;
+    const int cell = grid.CellOf(static_cast<int>(std::lround(point.uv_raw.x())),
+                                 static_cast<int>(std::lround(point.uv_raw.y())));
+    if (cell >= 0) blocked[cell] = 1;
+  }
+  const std::vector<MovingPoint> moving = MeasureUnmarkedPoints(grid, points);
+  for (const std::vector<int>& cluster : ClusterPoints(
+           moving, config.cluster_distance_m, config.margin_m, config.min_cluster_points)) {
+    RegionSeeds seeds;
+    seeds.label = static_cast<uint16_t>(mask.regions.size() + 1);
+    seeds.margin_m = config.margin_m;
+    seeds.box_min = Eigen::Vector3d::Constant(1e300);
+    seeds.box_max = Eigen::Vector3d::Constant(-1e300);
+    for (int i : cluster) {
+      seeds.box_min = seeds.box_min.cwiseMin(moving[i].p_camera);
+      seeds.box_max = seeds.box_max.cwiseMax(moving[i].p_camera);
+      const int cell = SeedCell(grid, moving[i]);
+      if (cell >= 0) seeds.cells.push_back(cell);
+      seeds.points.push_back(moving[i].id);
+    }
+    std::vector<uint16_t> touched;
+    DynamicRegion region = GrowRegion(grid, seeds, T_world_camera, blocked, &mask.labels, &touched);
+    if (region.cells == 0) continue;
+    if (touched.empty()) {
+      mask.regions.push_back(std::move(region));
+    } else {  // the same surface as an earlier region: one moving thing
+      MergeRegion(region, &mask.regions[*std::min_element(touched.begin(), touched.end()) - 1],
+                  &mask.labels);
+    }
+  }
+  return mask;
+}
+
+}  // namespace dslam
