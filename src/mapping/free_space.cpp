@@ -19,7 +19,7 @@ FreeSpaceTolerance FreeSpaceTolerance::From(const MapConfig& config, double min_
 }
 
 DepthView::DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
-                     double min_depth_m, double max_depth_m)
+                     double min_depth_m)
     : camera_(frame.camera), block_px_(block_px) {
   set_pose(T_world_camera);
   const cv::Mat& depth = frame.depth_m;
@@ -31,8 +31,8 @@ DepthView::DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_ca
     float* out = blocks.ptr<float>(v / block_px);
     for (int u = 0; u < depth.cols; ++u) {
       const float d = row[u];
-      // NaN fails both comparisons: no measurement.
-      if (d >= min_depth_m && d <= max_depth_m && d < out[u / block_px]) out[u / block_px] = d;
+      // NaN and infinity fail: no measurement.
+      if (d >= min_depth_m && d < out[u / block_px]) out[u / block_px] = d;
     }
   }
   // The nearest depth of each block's 3x3 neighbourhood (a grey erosion: the minimum).

@@ -30,12 +30,24 @@ void WritePcd(const std::string& path, const ColouredCloud& cloud) {
     if (!file.flush()) throw std::runtime_error("cannot write " + path);
     return;
   }
-  if (pcl::io::savePCDFileBinary(path, out) != 0) throw std::runtime_error("cannot write " + path);
+  int status = -1;
+  try {  // PCL's writer reports some failures by status, others by pcl::IOException
+    status = pcl::io::savePCDFileBinary(path, out);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot write " + path + ": " + e.what());
+  }
+  if (status != 0) throw std::runtime_error("cannot write " + path);
 }
 
 ColouredCloud ReadPcd(const std::string& path) {
   pcl::PointCloud<pcl::PointXYZRGB> in;
-  if (pcl::io::loadPCDFile(path, in) != 0) throw std::runtime_error("cannot read " + path);
+  int status = -1;
+  try {
+    status = pcl::io::loadPCDFile(path, in);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot read " + path + ": " + e.what());
+  }
+  if (status != 0) throw std::runtime_error("cannot read " + path);
   ColouredCloud cloud;
   cloud.reserve(in.size());
   for (const pcl::PointXYZRGB& q : in) {

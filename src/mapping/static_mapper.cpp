@@ -25,6 +25,7 @@ ColouredPoint Transformed(const Eigen::Isometry3f& T, const ColouredPoint& point
 
 StaticMapper::StaticMapper(const Config& config)
     : config_(Validated(config).map),
+      mask_config_(config.dynamic_mask),
       tolerance_(FreeSpaceTolerance::From(config.map, config.depth_noise.min_depth_m)),
       min_depth_m_(config.depth_noise.min_depth_m),
       voxels_(config.map.voxel_size_m) {}
@@ -35,11 +36,10 @@ StaticMapper::WindowKeyFrame StaticMapper::Prepare(const KeyFrameRecord& keyfram
   options.min_depth_m = min_depth_m_;
   options.max_depth_m = config_.max_depth_m;
   options.voxel_size_m = config_.voxel_size_m;
-  const cv::Mat mask = config_.dynamic_masks ? DynamicPixelMask(keyframe, config_) : cv::Mat();
-  return WindowKeyFrame{keyframe.id, keyframe.T_world_camera,
-                        BackProjectKeyFrame(keyframe.frame, mask, options),
-                        DepthView(keyframe.frame, keyframe.T_world_camera, config_.pixel_step,
-                                  min_depth_m_, config_.max_depth_m)};
+  const cv::Mat mask = config_.dynamic_masks ? DynamicPixelMask(keyframe, mask_config_) : cv::Mat();
+  return WindowKeyFrame{
+      keyframe.id, keyframe.T_world_camera, BackProjectKeyFrame(keyframe.frame, mask, options),
+      DepthView(keyframe.frame, keyframe.T_world_camera, config_.pixel_step, min_depth_m_)};
 }
 
 void StaticMapper::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
@@ -91,7 +91,10 @@ void StaticMapper::FuseForGood(WindowKeyFrame keyframe) {
   keyframe.view.set_pose(keyframe.T_world_camera);
   ColouredCloud points;
   if (config_.free_space_check) {
-    stats_.carved_voxels += voxels_.Carve(keyframe.view, tolerance_);
+    // Only voxels hit within the last free_space_keyframes keyframes: drift between keyframes
+    // far apart in time would make static surfaces look seen through.
+    stats_.carved_voxels +=
+        voxels_.Carve(keyframe.view, tolerance_, keyframe.id - config_.free_space_keyframes);
     points = CheckedPoints(keyframe);
     stats_.transient_points += keyframe.points_camera.size() - points.size();
   } else {

@@ -30,11 +30,13 @@ void VoxelMap::Add(const ColouredPoint& point_world, int keyframe_id) {
   voxel.last_keyframe = keyframe_id;
 }
 
-size_t VoxelMap::Carve(const DepthView& view, const FreeSpaceTolerance& tolerance) {
+size_t VoxelMap::Carve(const DepthView& view, const FreeSpaceTolerance& tolerance,
+                       int oldest_keyframe) {
   size_t removed = 0;
   for (auto it = voxels_.begin(); it != voxels_.end();) {
     Voxel& voxel = it->second;
-    if (view.Vote(voxel.mean, tolerance) == Visibility::kSeeThrough && voxel.misses < kMaxVotes) {
+    if (voxel.last_keyframe >= oldest_keyframe &&
+        view.Vote(voxel.mean, tolerance) == Visibility::kSeeThrough && voxel.misses < kMaxVotes) {
       ++voxel.misses;
     }
     if (tolerance.Transient(voxel.misses, voxel.hits)) {

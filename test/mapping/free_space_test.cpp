@@ -18,13 +18,18 @@ using test::MapTestConfig;
 using test::Wall;
 using test::WallWithBox;
 
+// Margin 0.1 m + 3% of the depth, points 0.3 - 4 m from the camera.
 FreeSpaceTolerance Tolerance() {
-  return FreeSpaceTolerance::From(MapTestConfig().map, 0.3);  // margin 0.1 m + 3% of the depth
+  Config config = MapTestConfig();
+  config.map.free_space_margin_m = 0.1;
+  config.map.free_space_margin_ratio = 0.03;
+  config.map.max_depth_m = 4.0;
+  return FreeSpaceTolerance::From(config.map, 0.3);
 }
 
 TEST(DepthView, VotesOnPointsAlongTheRays) {
   const KeyFrameRecord wall = MakeKeyFrame(0, Wall(3.0f));
-  const DepthView view(wall.frame, Eigen::Isometry3d::Identity(), 4, 0.3, 4.0);
+  const DepthView view(wall.frame, Eigen::Isometry3d::Identity(), 4, 0.3);
   const FreeSpaceTolerance tolerance = Tolerance();
   // Straight ahead; the margin at 2.9 m is 0.1 + 0.087 m.
   EXPECT_EQ(view.Vote(Eigen::Vector3f(0, 0, 3.0f), tolerance), Visibility::kSupport);
@@ -48,7 +53,7 @@ TEST(DepthView, DepthEdgesAndMissingDepthGiveNoSeeThrough) {
   // A box at 1.5 m over u in [300, 340): points just beside it, at the wall's depth minus 1 m,
   // are next to the box's nearer depth within a block: occluded, not seen through.
   const KeyFrameRecord keyframe = MakeKeyFrame(0, WallWithBox(3.0f, 1.5f, 300, 340, 0, 480));
-  const DepthView view(keyframe.frame, Eigen::Isometry3d::Identity(), 4, 0.3, 4.0);
+  const DepthView view(keyframe.frame, Eigen::Isometry3d::Identity(), 4, 0.3);
   const auto at_pixel = [](double u, double z) {
     return Eigen::Vector3f(static_cast<float>((u - 320.25) * z / 505.0), 0.0f,
                            static_cast<float>(z));
@@ -56,7 +61,7 @@ TEST(DepthView, DepthEdgesAndMissingDepthGiveNoSeeThrough) {
   EXPECT_EQ(view.Vote(at_pixel(298, 2.0), Tolerance()), Visibility::kNoVote);
   EXPECT_EQ(view.Vote(at_pixel(250, 2.0), Tolerance()), Visibility::kSeeThrough);
   const KeyFrameRecord empty = MakeKeyFrame(1, Wall(0.0f));
-  const DepthView none(empty.frame, Eigen::Isometry3d::Identity(), 4, 0.3, 4.0);
+  const DepthView none(empty.frame, Eigen::Isometry3d::Identity(), 4, 0.3);
   EXPECT_EQ(none.Vote(at_pixel(320, 2.0), Tolerance()), Visibility::kNoVote);
 }
 

@@ -1,8 +1,11 @@
 // StaticMapper with known answers: pose corrections move the window's points, fused points stay
-// where their final pose put them, resets, the dynamic mask, PCD files.
+// where their final pose put them, resets, the dynamic mask's pixels left out, PCD files.
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -73,43 +76,44 @@ TEST(StaticMapper, ResetWithANewWorldEmptiesTheMapAndKeepPoseFusesTheWindow) {
   EXPECT_EQ(mapper.stats().voxels, voxels);
 }
 
-TEST(DiscMask, MasksDiscsAroundUnmarkedPointsOnly) {
-  std::vector<ObservedPoint> points(2);
-  points[0].uv_raw = Eigen::Vector2d(100, 100);
-  points[0].is_static = false;
-  points[1].uv_raw = Eigen::Vector2d(400, 300);
-  points[1].is_static = true;
-  const cv::Mat mask = DiscMask(points, cv::Size(640, 480), 10);
-  EXPECT_EQ(mask.at<uint8_t>(100, 100), 255);
-  EXPECT_EQ(mask.at<uint8_t>(100, 110), 255);  // on the circle
-  EXPECT_EQ(mask.at<uint8_t>(100, 112), 0);
-  EXPECT_EQ(mask.at<uint8_t>(300, 400), 0);  // static point
-  // A filled disc of radius 10 covers about pi 10^2 = 314 pixels.
-  EXPECT_NEAR(cv::countNonZero(mask), 314, 30);
-  EXPECT_EQ(cv::countNonZero(DiscMask(points, cv::Size(640, 480), 0)), 1);
+// The 5 cm voxels of the samples (pixels 2, 6, ...) of a plane at `depth_m` inside (or outside)
+// the pixel box [250, 390) x [180, 300), from the pinhole model.
+size_t VoxelsOfSamples(double depth_m, bool inside_box) {
+  std::set<std::tuple<int, int, int>> keys;
+  for (int v = 2; v < 480; v += 4) {
+    for (int u = 2; u < 640; u += 4) {
+      if ((u >= 250 && u < 390 && v >= 180 && v < 300) != inside_box) continue;
+      keys.emplace(std::floor((u - 320.25) * depth_m / 505.0 / 0.05),
+                   std::floor((v - 240.25) * depth_m / 505.0 / 0.05), std::floor(depth_m / 0.05));
+    }
+  }
+  return keys.size();
 }
 
 TEST(StaticMapper, DynamicMasksLeaveTheMovingPixelsOut) {
-  KeyFrameRecord keyframe = MakeKeyFrame(0, Wall(kPlaneDepthM));
-  ObservedPoint mover;
-  mover.uv_raw = Eigen::Vector2d(320, 240);
-  mover.is_static = false;
-  keyframe.points = {mover};
+  // A person-sized box at 1.51 m in front of the plane, with nine unmarked points on it: the mask
+  // grows over the box and stops at its depth edge.
+  KeyFrameRecord keyframe =
+      MakeKeyFrame(0, test::WallWithBox(kPlaneDepthM, 1.51f, 250, 390, 180, 300));
+  for (int i = 0; i < 9; ++i) {
+    ObservedPoint mover;
+    mover.id = i;
+    mover.uv_raw = Eigen::Vector2d(280 + 40 * (i % 3), 200 + 40 * (i / 3));
+    mover.is_static = false;
+    keyframe.points.push_back(mover);
+  }
+  const cv::Mat mask = DynamicPixelMask(keyframe, MapTestConfig().dynamic_mask);
+  EXPECT_EQ(mask.at<uint8_t>(240, 320), 255);
+  EXPECT_EQ(mask.at<uint8_t>(240, 200), 0);
   Config config = MapTestConfig();
-  config.map.mask_radius_px = 60;
-  const auto near_mover = [](const ColouredCloud& cloud) {
-    size_t n = 0;  // within 0.15 m of the mover's ray on the plane (60 px = 0.24 m)
-    for (const ColouredPoint& point : cloud) n += point.p.head<2>().norm() < 0.15f;
-    return n;
-  };
   StaticMapper masked(config);
   masked.OnKeyFrames({keyframe}, {});
-  EXPECT_EQ(near_mover(masked.Cloud()), 0u);
+  EXPECT_EQ(masked.stats().voxels, VoxelsOfSamples(kPlaneDepthM, false));  // the plane alone
   config.map.dynamic_masks = false;
   StaticMapper unmasked(config);
   unmasked.OnKeyFrames({keyframe}, {});
-  EXPECT_GT(near_mover(unmasked.Cloud()), 20u);  // about pi (0.15 / 0.05)^2 = 28 voxels
-  EXPECT_GT(unmasked.stats().voxels, masked.stats().voxels);
+  EXPECT_EQ(unmasked.stats().voxels,
+            VoxelsOfSamples(kPlaneDepthM, false) + VoxelsOfSamples(1.51, true));
 }
 
 TEST(Pcd, WritesAndReadsColouredPoints) {
@@ -133,7 +137,12 @@ TEST(Pcd, WritesAndReadsColouredPoints) {
   WritePcd(path, {});  // an empty map is a valid file
   EXPECT_TRUE(ReadPcd(path).empty());
   std::remove(path.c_str());
-  EXPECT_THROW(WritePcd("/nonexistent/folder/map.pcd", cloud), std::runtime_error);
+  try {
+    WritePcd("/nonexistent/folder/map.pcd", cloud);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/folder/map.pcd"), std::string::npos);
+  }
   EXPECT_THROW(ReadPcd("/nonexistent/folder/map.pcd"), std::runtime_error);
 }
 

@@ -87,18 +87,22 @@ TEST(VoxelMap, CarveRemovesWhatAViewSeesThroughAndKeepsWellSupportedVoxels) {
   VoxelMap map(0.05);
   const ColouredPoint once{Eigen::Vector3f(0.01f, 0.01f, 1.51f), 0, 0, 0};
   const ColouredPoint twice{Eigen::Vector3f(-0.21f, 0.01f, 1.51f), 0, 0, 0};
-  map.Add(once, 0);
   map.Add(twice, 0);
   map.Add(twice, 0);  // the same keyframe: still one hit
   map.Add(twice, 1);  // a second keyframe: two hits
+  map.Add(once, 2);
   ASSERT_EQ(map.size(), 2u);
-  const KeyFrameRecord wall = MakeKeyFrame(2, Wall(3.0f));
-  const DepthView view(wall.frame, Eigen::Isometry3d::Identity(), 4, 0.3, 4.0);
+  const KeyFrameRecord wall = MakeKeyFrame(3, Wall(3.0f));
+  const DepthView view(wall.frame, Eigen::Isometry3d::Identity(), 4, 0.3);
   const FreeSpaceTolerance tolerance = FreeSpaceTolerance::From(MapTestConfig().map, 0.3);
-  EXPECT_EQ(map.Carve(view, tolerance), 1u);  // `once`: 1 miss >= 1 hit
+  // Only voxels last hit by the given keyframe or a later one vote (`twice`: 1, `once`: 2).
+  EXPECT_EQ(map.Carve(view, tolerance, 3), 0u);
+  ASSERT_EQ(map.size(), 2u);
+  EXPECT_EQ(map.Carve(view, tolerance, 2), 1u);  // `once`: 1 miss >= 1 hit
   ASSERT_EQ(map.size(), 1u);
   EXPECT_NEAR(map.Points()[0].p.x(), -0.21f, 1e-6);
-  EXPECT_EQ(map.Carve(view, tolerance), 1u);  // `twice`: 2 misses >= 2 hits
+  EXPECT_EQ(map.Carve(view, tolerance, 1), 0u);  // `twice`: 1 miss < 2 hits
+  EXPECT_EQ(map.Carve(view, tolerance, 1), 1u);  // `twice`: 2 misses >= 2 hits
   EXPECT_EQ(map.size(), 0u);
 }
 

@@ -45,10 +45,11 @@ struct FreeSpaceTolerance {
 /// neighbours: depth edges give occlusion, not see-through), with the keyframe's pose.
 class DepthView {
  public:
-  /// `frame.depth_m` in metres (0, NaN: none), `block_px` >= 1. Depths outside
-  /// [min_depth_m, max_depth_m] count as none.
+  /// `frame.depth_m` in metres (0, NaN: none), `block_px` >= 1. Depths below `min_depth_m` count
+  /// as none; far depths are kept (a far measurement still shows the free space before it; the
+  /// tolerance's max_depth_m limits the points voted on).
   DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
-            double min_depth_m, double max_depth_m);
+            double min_depth_m);
 
   /// The vote of this view on `p_world` [m, world frame].
   Visibility Vote(const Eigen::Vector3f& p_world, const FreeSpaceTolerance& tolerance) const;

@@ -6,11 +6,12 @@
 //   moving objects (DynamicPixelMask, map.dynamic_masks) and kept in its optical frame while the
 //   keyframe is in Slam's window, so that the back end's pose corrections move its points.
 // - When it leaves the window (or at a reset with kKeepPose, or FuseWindow), its pose is final
-//   and it is fused for good. With map.free_space_check, first its depth checks the map (a voxel
-//   it sees through gains a miss; transient voxels are removed: VoxelMap::Carve), then the depth
-//   images of the map.free_space_keyframes keyframes fused before it vote on each of its points
-//   (transient points are not fused), then the survivors are fused, and the map is cropped to
-//   the cube of half-side map.extent_m around its camera (the memory bound).
+//   and it is fused for good. With map.free_space_check, first its depth checks the voxels hit
+//   by the map.free_space_keyframes keyframes before it (a voxel it sees through gains a miss;
+//   transient voxels are removed: VoxelMap::Carve), then the depth images of those keyframes
+//   vote on each of its points (transient points are not fused), then the survivors are fused,
+//   and the map is cropped to the cube of half-side map.extent_m around its camera (the memory
+//   bound).
 // - A reset with kNewWorld empties everything.
 //
 // Threads: the observer calls come from one thread at a time (Slam's contract); Cloud, stats,
@@ -43,8 +44,8 @@ struct StaticMapStats {
 /// Fuses Slam's keyframes into a static map (see above).
 class StaticMapper : public KeyFrameObserver {
  public:
-  /// Uses config.map and config.depth_noise.min_depth_m. Throws ConfigError when `config` is
-  /// invalid.
+  /// Uses config.map, config.dynamic_mask and config.depth_noise.min_depth_m. Throws ConfigError
+  /// when `config` is invalid.
   explicit StaticMapper(const Config& config);
 
   void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
@@ -78,6 +79,7 @@ class StaticMapper : public KeyFrameObserver {
   ColouredCloud CheckedPoints(const WindowKeyFrame& keyframe);  ///< lock held
 
   const MapConfig config_;
+  const DynamicMaskConfig mask_config_;
   const FreeSpaceTolerance tolerance_;
   const double min_depth_m_;
   mutable std::mutex mutex_;  ///< guards everything below

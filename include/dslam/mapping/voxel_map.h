@@ -35,9 +35,10 @@ class VoxelMap {
   /// voxel however many of its points fall into it (call with its points one after another).
   void Add(const ColouredPoint& point_world, int keyframe_id);
 
-  /// Each voxel's point voted on by `view`: a see-through adds a miss; voxels that become
-  /// transient (FreeSpaceTolerance::Transient) are removed. Returns the number removed.
-  size_t Carve(const DepthView& view, const FreeSpaceTolerance& tolerance);
+  /// The point of each voxel last hit by keyframe `oldest_keyframe` or a later one (ids grow with
+  /// time) voted on by `view`: a see-through adds a miss; voxels that become transient
+  /// (FreeSpaceTolerance::Transient) are removed. Returns the number removed.
+  size_t Carve(const DepthView& view, const FreeSpaceTolerance& tolerance, int oldest_keyframe);
 
   /// Removes the voxels whose point lies outside the axis-aligned cube of half-side
   /// `half_side_m` [m] centred on `centre_world` [m]. Returns the number removed.
