@@ -37,7 +37,7 @@ FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& reque
   if (mode_ == BackEndMode::kThreaded) return result;
   // Back end (Sec. V): local mapping on the window the new keyframe completes.
   if (result.keyframe && config().backend.enabled) result.backend = RunLocalMapping();
-  if (observers_.empty()) return result;
+  if (!HasBackEndWork()) return result;  // synchronous: only the observers' events
   const Delivery delivery = TakeEvents();
   lock.unlock();
   Deliver(delivery);
@@ -75,9 +75,15 @@ void Slam::Deliver(const Delivery& delivery) const {
   size_t begin = 0;
   const auto deliver_keyframes = [&](size_t end) {
     if (end == begin) return;
-    const std::vector<KeyFrameRecord> group(delivery.keyframes.begin() + begin,
-                                            delivery.keyframes.begin() + end);
-    for (const auto& observer : observers_) observer->OnKeyFrames(group, delivery.window);
+    if (begin == 0 && end == delivery.keyframes.size()) {  // no reset among them: no copy
+      for (const auto& observer : observers_) {
+        observer->OnKeyFrames(delivery.keyframes, delivery.window);
+      }
+    } else {
+      const std::vector<KeyFrameRecord> group(delivery.keyframes.begin() + begin,
+                                              delivery.keyframes.begin() + end);
+      for (const auto& observer : observers_) observer->OnKeyFrames(group, delivery.window);
+    }
     begin = end;
   };
   for (const auto& [keyframes_before, mode] : delivery.resets) {

@@ -1,4 +1,5 @@
-#include "dslam/mapping/keyframe_cloud.h"
+// A keyframe as a coloured cloud in its optical frame: its dynamic mask and back-projection.
+#include "dslam/mapping/coloured_cloud.h"
 
 #include <algorithm>
 #include <memory>
@@ -6,6 +7,9 @@
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
+#include <opencv2/imgproc.hpp>
+
+#include "dslam/mapping/dynamic_mask.h"
 
 namespace dslam {
 namespace {
@@ -56,6 +60,18 @@ ColouredCloud BackProjectKeyFrame(const RgbdFrame& frame, const cv::Mat& mask,
     cloud.push_back({Eigen::Vector3f(q.x, q.y, q.z), q.r, q.g, q.b});
   }
   return cloud;
+}
+
+cv::Mat DynamicPixelMask(const KeyFrameRecord& keyframe, const DynamicMaskConfig& config) {
+  const DynamicMask mask =
+      ComputeDynamicMask(keyframe.frame, keyframe.T_world_camera, keyframe.points, config);
+  cv::Mat pixels = cv::Mat::zeros(keyframe.frame.depth_m.size(), CV_8UC1);
+  if (mask.labels.empty() || mask.regions.empty()) return pixels;
+  const int d = mask.decimation;
+  const cv::Mat cells = mask.labels != 0;  // CV_8UC1, 255 on masked cells
+  cv::resize(cells, pixels(cv::Rect(0, 0, cells.cols * d, cells.rows * d)),
+             cv::Size(cells.cols * d, cells.rows * d), 0, 0, cv::INTER_NEAREST);
+  return pixels;
 }
 
 }  // namespace dslam

@@ -4,8 +4,7 @@
 #include <unordered_map>
 #include <utility>
 
-#include "dslam/mapping/keyframe_cloud.h"
-#include "dslam/mapping/keyframe_mask.h"
+#include "dslam/mapping/coloured_cloud.h"
 
 namespace dslam {
 namespace {

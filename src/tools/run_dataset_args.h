@@ -1,23 +1,32 @@
 #pragma once
-// dslam_run_dataset's command line: the options, their parsing and the usage text.
+// dslam_run_dataset's command line: the options, their parsing and the usage text (the README's
+// option table describes each).
 
 #include <string>
 
 namespace dslam {
 namespace tools {
 
-/// The options of dslam_run_dataset (file paths empty: not written).
+/// The options of dslam_run_dataset. A file path left empty: that file is not written.
 struct RunDatasetArgs {
-  std::string dataset, camera, trajectory, status, config, summary, segmentation;
-  std::string refined_trajectory;  ///< every frame on its reference keyframe after the last BA
-  std::string objects;             ///< moving objects file (objects_output.h)
-  std::string map;                 ///< static map PCD (map_output.h)
-  std::string map_unmasked;        ///< the same fusion without masks and free-space check, PCD
-  std::string static_points;       ///< "on", "off" or empty (the config's static_points.enabled)
-  std::string backend;             ///< "on", "off" or empty (the config's backend.enabled)
-  int max_frames = -1;
-  bool quiet = false;
-  bool threads = false;  ///< the back end on its own thread (BackEndMode::kThreaded)
+  std::string dataset;       ///< --dataset: TUM-layout folder (required)
+  std::string camera;        ///< --camera: camera.yaml; empty: FOLDER/camera.yaml
+  std::string trajectory;    ///< --trajectory: causal poses, TUM format (required)
+  std::string status;        ///< --status: per-frame CSV
+  std::string config;        ///< --config: YAML with parameters to override
+  std::string summary;       ///< --summary: the run's numbers as JSON
+  std::string segmentation;  ///< --segmentation: per-frame label scores (synthetic folders)
+  /// --refined-trajectory: every frame on its reference keyframe after the last BA.
+  std::string refined_trajectory;
+  std::string objects;  ///< --objects: moving objects file (objects_output.h)
+  std::string map;      ///< --map: static map PCD (map_output.h)
+  /// --map-unmasked: the same fusion without masks and free-space check, PCD.
+  std::string map_unmasked;
+  std::string static_points;  ///< --static-points: "on", "off" or empty (the config's value)
+  std::string backend;        ///< --backend: "on", "off" or empty (the config's value)
+  int max_frames = -1;        ///< --max-frames: process only the first N frames; -1: all
+  bool quiet = false;         ///< --quiet: no progress bar
+  bool threads = false;       ///< --threads: the back end on its own thread (kThreaded)
   /// [Hz] --rate: frame i is handed over no earlier than start + i / rate_hz; 0: at once.
   double rate_hz = 0.0;
 };

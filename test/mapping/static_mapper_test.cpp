@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include "dslam/mapping/keyframe_mask.h"
 #include "dslam/mapping/static_mapper.h"
 #include "mapping/mapping_scenes.h"
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dslam/mapping/keyframe_cloud.h"
+#include "dslam/mapping/coloured_cloud.h"
 #include "dslam/mapping/static_mapper.h"
 #include "dslam/mapping/voxel_map.h"
 #include "mapping/mapping_scenes.h"

@@ -1,12 +1,18 @@
 #pragma once
-// The static map's output: coloured points, and their PCD files (x y z rgb, the fields PCL's
-// PointXYZRGB writes).
+// Coloured point clouds of the static map: the type, PCD files (x y z rgb, the fields PCL's
+// PointXYZRGB writes), and a keyframe's depth as such a cloud, ready to be fused: sampled every
+// few pixels, without the pixels of moving objects, voxel filtered.
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "dslam/backend/keyframe_observer.h"
+#include "dslam/core/objects_config.h"
+#include "dslam/core/rgbd_frame.h"
 
 namespace dslam {
 
@@ -26,5 +32,26 @@ void WritePcd(const std::string& path, const ColouredCloud& cloud);
 /// Reads a PCD file with fields x y z and, when present, rgb. Throws std::runtime_error naming
 /// `path` when it cannot be read.
 ColouredCloud ReadPcd(const std::string& path);
+
+/// What BackProjectKeyFrame samples and how it thins the result.
+struct BackProjection {
+  int pixel_step = 4;          ///< [px] every pixel_step-th pixel in u and v
+  double min_depth_m = 0.3;    ///< [m] nearer depths are skipped
+  double max_depth_m = 4.0;    ///< [m] farther depths are skipped
+  double voxel_size_m = 0.05;  ///< [m] voxel grid (PCL VoxelGrid) of the result; 0: none
+};
+
+/// The pixels of `frame` with a depth in range and `mask` 0 (`mask` CV_8UC1 of the image size,
+/// or empty: none masked), back-projected (undistorted first) into the optical frame [m],
+/// coloured from `frame.colour` (grey images: r = g = b), one point per voxel (centroid and mean
+/// colour of the voxel's points).
+ColouredCloud BackProjectKeyFrame(const RgbdFrame& frame, const cv::Mat& mask,
+                                  const BackProjection& options);
+
+/// Which pixels of `keyframe` belong to moving objects, so that the static map leaves them out:
+/// CV_8UC1 of its images' size, 255 on them, 0 elsewhere. The per-pixel dynamic mask of
+/// dynamic_mask.h (ComputeDynamicMask of the keyframe's frame, pose and point labels), each
+/// cell's label on its pixels; pixels beyond the last whole cell are 0.
+cv::Mat DynamicPixelMask(const KeyFrameRecord& keyframe, const DynamicMaskConfig& config);
 
 }  // namespace dslam
