@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "dslam/io/stamp_association.h"
 
@@ -10,6 +11,20 @@ namespace dslam {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
+
+const StampedPose& NearestPose(const Trajectory& poses, double stamp_s, double max_dt_s) {
+  const StampedPose* best = nullptr;
+  for (const StampedPose& pose : poses) {
+    if (!best || std::abs(pose.stamp_s - stamp_s) < std::abs(best->stamp_s - stamp_s)) {
+      best = &pose;
+    }
+  }
+  if (!best || std::abs(best->stamp_s - stamp_s) > max_dt_s) {
+    throw std::runtime_error("no ground-truth pose within " + std::to_string(max_dt_s) +
+                             " s of stamp " + std::to_string(stamp_s));
+  }
+  return *best;
+}
 
 double AngleOf(const Eigen::Matrix3d& rotation) {
   return Eigen::AngleAxisd(Eigen::Quaterniond(rotation).normalized()).angle();
@@ -163,6 +178,19 @@ TrajectoryMetrics EvaluateTrajectory(const Trajectory& estimated, const Trajecto
   for (const StampedPose& pose : estimated) estimated_stamps.push_back(pose.stamp_s);
   metrics.coverage = ComputeCoverage(estimated_stamps, start, end, options.max_gap_s);
   return metrics;
+}
+
+Eigen::Isometry3d EstimateFrameInWorld(const Trajectory& groundtruth, double first_frame_stamp_s,
+                                       const Trajectory& estimated, double max_dt_s) {
+  if (estimated.empty()) {
+    return NearestPose(groundtruth, first_frame_stamp_s, max_dt_s).T_world_camera;
+  }
+  const StampedPose* first = &estimated.front();
+  for (const StampedPose& pose : estimated) {
+    if (pose.stamp_s < first->stamp_s) first = &pose;
+  }
+  return NearestPose(groundtruth, first->stamp_s, max_dt_s).T_world_camera *
+         first->T_world_camera.inverse();
 }
 
 }  // namespace dslam

@@ -69,6 +69,8 @@ DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
   DynamicRegion region;
   region.label = seeds.label;
   region.points = seeds.points;
+  for (const Eigen::Vector3d& p : seeds.points_camera)
+    region.points_world.push_back(T_world_camera * p);
   const Eigen::Vector3d box_min = seeds.box_min.array() - seeds.margin_m;
   const Eigen::Vector3d box_max = seeds.box_max.array() + seeds.margin_m;
   auto* label = labels->ptr<uint16_t>();
@@ -127,6 +129,8 @@ void MergeRegion(const DynamicRegion& from, DynamicRegion* into, cv::Mat* labels
   into->max_world = into->max_world.cwiseMax(from.max_world);
   into->cells = cells;
   into->points.insert(into->points.end(), from.points.begin(), from.points.end());
+  into->points_world.insert(into->points_world.end(), from.points_world.begin(),
+                            from.points_world.end());
   labels->setTo(into->label, *labels == from.label);
 }
 

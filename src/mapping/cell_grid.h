@@ -53,10 +53,11 @@ class CellGrid {
 /// What one region grows from.
 struct RegionSeeds {
   uint16_t label = 0;
-  std::vector<int> cells;            ///< seed cells (may repeat)
-  std::vector<PointId> points;       ///< the points of the cluster
-  Eigen::Vector3d box_min, box_max;  ///< [m] box of the cluster's points, optical frame
-  double margin_m = 0.0;             ///< [m] how far the region may grow beyond the box
+  std::vector<int> cells;                      ///< seed cells (may repeat)
+  std::vector<PointId> points;                 ///< the points of the cluster
+  std::vector<Eigen::Vector3d> points_camera;  ///< [m] their positions, optical frame
+  Eigen::Vector3d box_min, box_max;            ///< [m] box of the cluster's points, optical frame
+  double margin_m = 0.0;                       ///< [m] how far the region may grow beyond the box
 };
 
 /// Grows one region (breadth first, 4-neighbours, depth-continuous, within margin_m of the

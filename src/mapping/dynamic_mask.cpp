@@ -160,6 +160,7 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
       const int cell = SeedCell(grid, moving[i]);
       if (cell >= 0) seeds.cells.push_back(cell);
       seeds.points.push_back(moving[i].id);
+      seeds.points_camera.push_back(moving[i].p_camera);
     }
     std::vector<uint16_t> touched;
     DynamicRegion region = GrowRegion(grid, seeds, T_world_camera, blocked, &mask.labels, &touched);

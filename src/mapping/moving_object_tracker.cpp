@@ -1,5 +1,7 @@
 #include "dslam/mapping/moving_object_tracker.h"
 
+#include <algorithm>
+
 namespace dslam {
 
 MovingObjectTracker::MovingObjectTracker(const Config& config)
@@ -8,11 +10,18 @@ MovingObjectTracker::MovingObjectTracker(const Config& config)
       tracker_(config.objects) {}
 
 std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
-                                                  const FrameResult& result) {
-  if (result.reset) tracker_.Reset();
+                                                        const FrameResult& result) {
+  if (result.reset) Reset();
   if (!result.has_pose) return {};
   mask_ = ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_);
-  return tracker_.Update(result.stamp_s, ObservationsFromMask(mask_, objects_config_));
+  if (!history_.empty() && !(result.stamp_s > history_.back().stamp_s)) history_.clear();
+  std::vector<ObjectObservation> observations =
+      ObservationsFromMask(mask_, objects_config_, result.stamp_s, history_);
+  history_.push_back(PositionsOf(mask_, result.stamp_s));
+  while (result.stamp_s - history_.front().stamp_s >
+         std::max(objects_config_.velocity_baseline_s, objects_config_.motion_baseline_s))
+    history_.pop_front();
+  return tracker_.Update(result.stamp_s, observations);
 }
 
 }  // namespace dslam

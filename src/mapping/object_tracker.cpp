@@ -9,11 +9,55 @@ namespace {
 
 /// [m/s] prior standard deviation of a new track's velocity (a brisk walk).
 constexpr double kInitialVelocitySigmaMps = 1.5;
+double MedianOf(std::vector<double> values) {
+  const size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + mid, values.end());
+  if (values.size() % 2 == 1) return values[mid];
+  return 0.5 * (values[mid] + *std::max_element(values.begin(), values.begin() + mid));
+}
+
+/// Per-axis median velocity [m/s] of the region's points, each from its oldest position in
+/// `history` within `baseline_s` [s]; false when fewer than `min_points` points have one.
+bool RegionVelocity(const DynamicRegion& region, const std::deque<PointPositions>& history,
+                    double stamp_s, double baseline_s, const ObjectsConfig& config,
+                    Eigen::Vector3d* velocity) {
+  std::vector<double> axes[3];
+  for (size_t i = 0; i < region.points.size(); ++i) {
+    for (const PointPositions& before : history) {
+      const double dt_s = stamp_s - before.stamp_s;
+      if (dt_s > baseline_s || dt_s <= 0.0) continue;
+      const auto p = before.by_id.find(region.points[i]);
+      if (p == before.by_id.end()) continue;
+      const Eigen::Vector3d v = (region.points_world[i] - p->second) / dt_s;
+      // Faster: the point was matched to another thing's feature (an unmarked point follows its
+      // matches), not a motion.
+      if (v.norm() <= config.max_point_speed_mps) {
+        for (int a = 0; a < 3; ++a) axes[a].push_back(v[a]);
+      }
+      break;
+    }
+  }
+  if (static_cast<int>(axes[0].size()) < config.min_velocity_points) return false;
+  for (int a = 0; a < 3; ++a) (*velocity)[a] = MedianOf(axes[a]);
+  return true;
+}
 
 }  // namespace
 
+PointPositions PositionsOf(const DynamicMask& mask, double stamp_s) {
+  PointPositions positions;
+  positions.stamp_s = stamp_s;
+  for (const DynamicRegion& region : mask.regions) {
+    for (size_t i = 0; i < region.points.size(); ++i) {
+      positions.by_id[region.points[i]] = region.points_world[i];
+    }
+  }
+  return positions;
+}
+
 std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
-                                                    const ObjectsConfig& config) {
+                                                    const ObjectsConfig& config, double stamp_s,
+                                                    const std::deque<PointPositions>& history) {
   std::vector<ObjectObservation> observations;
   for (const DynamicRegion& region : mask.regions) {
     if (static_cast<int>(region.points.size()) < config.min_points) continue;
@@ -23,6 +67,12 @@ std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
     observation.extent = region.max_world - region.min_world;
     observation.colour = region.mean_colour;
     observation.points = static_cast<int>(region.points.size());
+    observation.has_velocity = RegionVelocity(region, history, stamp_s, config.velocity_baseline_s,
+                                              config, &observation.velocity_world);
+    Eigen::Vector3d motion;
+    if (RegionVelocity(region, history, stamp_s, config.motion_baseline_s, config, &motion)) {
+      observation.motion_speed_mps = motion.norm();
+    }
     observations.push_back(observation);
   }
   return observations;
@@ -44,18 +94,28 @@ void ObjectTracker::Predict(Track* track, double dt_s) const {
 
 void ObjectTracker::Correct(Track* track, const ObjectObservation& observation,
                             double stamp_s) const {
-  // Position measurement z = H x + n, H = [I 0], n ~ N(0, sigma^2 I).
-  const double r = config_.position_sigma_m * config_.position_sigma_m;
-  const Eigen::Matrix3d S = track->P.topLeftCorner<3, 3>() + r * Eigen::Matrix3d::Identity();
-  const Eigen::Matrix<double, 6, 3> K = track->P.leftCols<3>() * S.inverse();
-  track->x += K * (observation.centroid_world - track->x.head<3>());
+  // z = H x + n: the centroid (H = [I 0]) and, when measured, the points' velocity (H = I).
+  const int m = observation.has_velocity ? 6 : 3;
+  Eigen::Matrix<double, 6, 1> z;
+  z << observation.centroid_world, observation.velocity_world;
+  Eigen::Matrix<double, 6, 1> r;
+  r << Eigen::Vector3d::Constant(config_.position_sigma_m * config_.position_sigma_m),
+      Eigen::Vector3d::Constant(config_.velocity_sigma_mps * config_.velocity_sigma_mps);
+  const Eigen::MatrixXd P_xz = track->P.leftCols(m);
+  Eigen::MatrixXd S = track->P.topLeftCorner(m, m);
+  S.diagonal() += r.head(m);
+  const Eigen::MatrixXd K = P_xz * S.inverse();
+  track->x += K * (z.head(m) - track->x.head(m));
   Eigen::Matrix<double, 6, 6> I_KH = Eigen::Matrix<double, 6, 6>::Identity();
-  I_KH.leftCols<3>() -= K;
+  I_KH.leftCols(m) -= K;
   track->P = I_KH * track->P;
   track->P = 0.5 * (track->P + track->P.transpose()).eval();
   track->last = observation;
   track->last_seen_s = stamp_s;
   ++track->hits;
+  const bool moving = observation.motion_speed_mps >= config_.min_speed_mps;
+  track->moving_streak = moving ? track->moving_streak + 1 : 0;
+  if (track->moving_streak >= config_.min_hits) track->moved = true;
 }
 
 ObjectTracker::Track ObjectTracker::StartTrack(const ObjectObservation& observation,
@@ -63,14 +123,18 @@ ObjectTracker::Track ObjectTracker::StartTrack(const ObjectObservation& observat
   Track track;
   track.id = next_id_++;
   track.x.head<3>() = observation.centroid_world;
+  if (observation.has_velocity) track.x.tail<3>() = observation.velocity_world;
   track.P.setZero();
   track.P.topLeftCorner<3, 3>().diagonal().setConstant(config_.position_sigma_m *
                                                        config_.position_sigma_m);
-  track.P.bottomRightCorner<3, 3>().diagonal().setConstant(kInitialVelocitySigmaMps *
-                                                           kInitialVelocitySigmaMps);
+  const double velocity_sigma =
+      observation.has_velocity ? config_.velocity_sigma_mps : kInitialVelocitySigmaMps;
+  track.P.bottomRightCorner<3, 3>().diagonal().setConstant(velocity_sigma * velocity_sigma);
   track.last = observation;
   track.first_seen_s = track.last_seen_s = stamp_s;
   track.hits = 1;
+  track.moving_streak = observation.motion_speed_mps >= config_.min_speed_mps ? 1 : 0;
+  track.moved = track.moving_streak >= config_.min_hits;
   return track;
 }
 
@@ -121,7 +185,7 @@ std::vector<TrackedObject> ObjectTracker::Update(
                 tracks_.end());
   std::vector<TrackedObject> reported;
   for (const Track& track : tracks_) {
-    if (track.last_seen_s != stamp_s || track.hits < config_.min_hits) continue;
+    if (!track.moved || stamp_s - track.last_seen_s > config_.coast_s) continue;
     TrackedObject object;
     object.id = track.id;
     object.position_world = track.x.head<3>();

@@ -11,7 +11,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * M_PI;
 }  // namespace
 
-void AppendMovingBox(const MovingBoxParams& p, double t_s, uint16_t id, SceneGeometry* scene) {
+Eigen::Vector3d MovingBoxCentreAt(const MovingBoxParams& p, double t_s) {
   const Eigen::Vector3d span = p.end_m - p.start_m;
   const double distance = span.norm();
   Eigen::Vector3d centre = p.start_m;
@@ -19,6 +19,19 @@ void AppendMovingBox(const MovingBoxParams& p, double t_s, uint16_t id, SceneGeo
     const double s = std::fmod(p.speed_mps * t_s, 2.0 * distance);
     centre += span * ((s < distance ? s : 2.0 * distance - s) / distance);
   }
+  return centre;
+}
+
+Eigen::Vector3d MovingBoxVelocityAt(const MovingBoxParams& p, double t_s) {
+  const Eigen::Vector3d span = p.end_m - p.start_m;
+  const double distance = span.norm();
+  if (distance <= 0.0) return Eigen::Vector3d::Zero();
+  const double s = std::fmod(p.speed_mps * t_s, 2.0 * distance);
+  return (s < distance ? p.speed_mps : -p.speed_mps) / distance * span;
+}
+
+void AppendMovingBox(const MovingBoxParams& p, double t_s, uint16_t id, SceneGeometry* scene) {
+  const Eigen::Vector3d centre = MovingBoxCentreAt(p, t_s);
   Box box;
   box.T_world_box =
       Eigen::Translation3d(centre) *

@@ -116,6 +116,13 @@ WalkerState WalkerStateAt(const WalkerParams& w, double t_s) {
   return state;
 }
 
+Eigen::Vector3d WalkerVelocityAt(const WalkerParams& w, double t_s) {
+  const WalkerState state = WalkerStateAt(w, t_s);
+  if (state.idle_time_s >= 0.0) return Eigen::Vector3d::Zero();
+  return w.speed_mps *
+         Eigen::Vector3d(std::cos(state.heading_rad), std::sin(state.heading_rad), 0.0);
+}
+
 void AppendWalker(const WalkerParams& w, double t_s, uint16_t id, SceneGeometry* scene) {
   const WalkerState state = WalkerStateAt(w, t_s);
   const Pose pose = GaitPose(w, state);

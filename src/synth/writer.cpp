@@ -1,6 +1,7 @@
 #include "dslam/synth/writer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 
 #include "dslam/core/stopwatch.h"
 #include "dslam/io/trajectory_io.h"
+#include "dslam/synth/object_truth.h"
 #include "dslam/synth/texture.h"
 
 namespace dslam {
@@ -30,6 +32,17 @@ std::ofstream OpenText(const std::string& path, const std::string& header) {
 
 }  // namespace
 
+cv::Mat NoiseFreeDepthUnits(const cv::Mat& depth_true_m, double depth_scale) {
+  cv::Mat units(depth_true_m.size(), CV_16UC1, cv::Scalar(0));
+  for (int v = 0; v < depth_true_m.rows; ++v) {
+    for (int u = 0; u < depth_true_m.cols; ++u) {
+      const double value = std::round(depth_true_m.at<float>(v, u) * depth_scale);
+      if (value >= 1.0 && value <= 65535.0) units.at<uint16_t>(v, u) = static_cast<uint16_t>(value);
+    }
+  }
+  return units;
+}
+
 std::string FormatStamp(double stamp_s) {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.6f", stamp_s);
@@ -44,11 +57,66 @@ void WriteCameraYaml(const std::string& path, const SensorParams& s) {
   if (!out) throw std::runtime_error("error while writing " + path);
 }
 
+namespace {
+
+/// The text files of a sequence folder that grow by one or more lines per frame.
+struct FrameLists {
+  std::ofstream rgb, depth, mask, depth_true, objects, coverage;
+
+  FrameLists(const std::string& folder, const Scenario& sc) {
+    const std::string note = "# dslam_synth " + sc.name + " seed " + std::to_string(sc.seed) + "\n";
+    const std::string columns = "# timestamp filename\n";
+    rgb = OpenText(folder + "/rgb.txt", "# color images\n" + note + columns);
+    depth = OpenText(folder + "/depth.txt", "# depth maps\n" + note + columns);
+    mask = OpenText(folder + "/mask.txt",
+                    "# moving-object masks (16-bit id, 0 = static)\n" + note + columns);
+    depth_true = OpenText(folder + "/depth_true.txt",
+                          "# noise-free depth maps (16-bit, depth_scale units per metre, 0 = "
+                          "nothing hit; no sensor range, dropouts or noise)\n" +
+                              note + columns);
+    objects = OpenText(folder + "/objects.txt", ObjectTruthHeader(sc));
+    coverage = OpenText(folder + "/dynamic_coverage.txt",
+                        "# timestamp fraction_of_pixels_on_moving_objects\n");
+  }
+
+  void Close(const std::string& folder) {
+    for (std::ofstream* out : {&rgb, &depth, &mask, &depth_true, &objects, &coverage}) {
+      out->flush();
+      if (!*out) throw std::runtime_error("error while writing the file lists in " + folder);
+    }
+  }
+};
+
+/// Writes the images of frame `f` and its lines of the file lists.
+void WriteFrame(const SyntheticSequence& sequence, const SyntheticFrame& f,
+                const std::string& folder, FrameLists* lists) {
+  const std::string stamp = FormatStamp(f.frame.stamp_s);
+  WritePng(folder + "/rgb/" + stamp + ".png", f.frame.colour);
+  WritePng(folder + "/depth/" + stamp + ".png", f.depth_units);
+  WritePng(folder + "/mask/" + stamp + ".png", f.mask);
+  WritePng(folder + "/depth_true/" + stamp + ".png",
+           NoiseFreeDepthUnits(f.depth_true_m, sequence.scenario().sensor.depth_scale));
+  lists->rgb << stamp << " rgb/" << stamp << ".png\n";
+  lists->depth << stamp << " depth/" << stamp << ".png\n";
+  lists->mask << stamp << " mask/" << stamp << ".png\n";
+  lists->depth_true << stamp << " depth_true/" << stamp << ".png\n";
+  for (const ObjectTruth& object : VisibleObjects(sequence, f)) {
+    lists->objects << FormatObjectTruth(f.frame.stamp_s, object) << "\n";
+  }
+  char line[64];
+  std::snprintf(line, sizeof(line), "%s %.6f\n", stamp.c_str(), f.dynamic_fraction);
+  lists->coverage << line;
+}
+
+}  // namespace
+
 WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string& folder, int frames,
                            const std::function<void(int, int)>& progress) {
   const Stopwatch watch;
   namespace fs = std::filesystem;
-  for (const char* sub : {"rgb", "depth", "mask"}) fs::create_directories(fs::path(folder) / sub);
+  for (const char* sub : {"rgb", "depth", "mask", "depth_true"}) {
+    fs::create_directories(fs::path(folder) / sub);
+  }
   const Scenario& sc = sequence.scenario();
   WriteCameraYaml(folder + "/camera.yaml", sc.sensor);
   std::ofstream info = OpenText(folder + "/synth_info.txt", "# dslam_synth sequence\n");
@@ -56,31 +124,13 @@ WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string&
   if (sc.camera.exposure.exposure_s > 0.0) {  // motion blur (motion_blur.h); absent when sharp
     info << "exposure_s: " << sc.camera.exposure.exposure_s << "\n";
   }
-  const std::string note = "# dslam_synth " + sc.name + " seed " + std::to_string(sc.seed) + "\n";
-  std::ofstream rgb =
-      OpenText(folder + "/rgb.txt", "# color images\n" + note + "# timestamp filename\n");
-  std::ofstream depth =
-      OpenText(folder + "/depth.txt", "# depth maps\n" + note + "# timestamp filename\n");
-  std::ofstream mask =
-      OpenText(folder + "/mask.txt",
-               "# moving-object masks (16-bit id, 0 = static)\n" + note + "# timestamp filename\n");
-  std::ofstream coverage = OpenText(folder + "/dynamic_coverage.txt",
-                                    "# timestamp fraction_of_pixels_on_moving_objects\n");
+  FrameLists lists(folder, sc);
   Trajectory groundtruth;
   WriteSummary summary;
   summary.coverage_min = 1.0;
   for (int i = 0; i < frames; ++i) {
     const SyntheticFrame f = sequence.RenderFrame(i);
-    const std::string stamp = FormatStamp(f.frame.stamp_s);
-    WritePng(folder + "/rgb/" + stamp + ".png", f.frame.colour);
-    WritePng(folder + "/depth/" + stamp + ".png", f.depth_units);
-    WritePng(folder + "/mask/" + stamp + ".png", f.mask);
-    rgb << stamp << " rgb/" << stamp << ".png\n";
-    depth << stamp << " depth/" << stamp << ".png\n";
-    mask << stamp << " mask/" << stamp << ".png\n";
-    char line[64];
-    std::snprintf(line, sizeof(line), "%s %.6f\n", stamp.c_str(), f.dynamic_fraction);
-    coverage << line;
+    WriteFrame(sequence, f, folder, &lists);
     groundtruth.push_back({f.frame.stamp_s, f.T_world_camera});
     summary.coverage_mean += f.dynamic_fraction / std::max(1, frames);
     summary.coverage_min = std::min(summary.coverage_min, f.dynamic_fraction);
@@ -88,10 +138,7 @@ WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string&
     if (progress) progress(i + 1, frames);
   }
   WriteTumTrajectory(folder + "/groundtruth.txt", groundtruth);
-  for (std::ofstream* out : {&rgb, &depth, &mask, &coverage}) {
-    out->flush();
-    if (!*out) throw std::runtime_error("error while writing the file lists in " + folder);
-  }
+  lists.Close(folder);
   summary.frames = frames;
   summary.seconds = watch.ElapsedMs() / 1000.0;
   return summary;

@@ -2,6 +2,7 @@
 // centroid noise, crossing movers of different colours, gaps and stamps going backwards.
 #include "dslam/mapping/object_tracker.h"
 
+#include <deque>
 #include <map>
 #include <random>
 
@@ -12,10 +13,15 @@ namespace {
 
 constexpr double kFps = 30.0;
 
-ObjectObservation Observe(const Eigen::Vector3d& p, const Eigen::Vector3d& colour) {
+/// An observation at `p` whose points move at `velocity` [m/s] (measured over both baselines).
+ObjectObservation Observe(const Eigen::Vector3d& p, const Eigen::Vector3d& colour,
+                          const Eigen::Vector3d& velocity = Eigen::Vector3d(0.5, 0.0, 0.0)) {
   ObjectObservation o;
   o.centroid_world = p;
   o.colour = colour;
+  o.velocity_world = velocity;
+  o.has_velocity = true;
+  o.motion_speed_mps = velocity.norm();
   o.extent = Eigen::Vector3d(0.5, 0.3, 1.7);
   o.points = 20;
   return o;
@@ -31,7 +37,7 @@ TEST(ObjectTracker, ConstantVelocityMoverKeepsItsIdAndItsVelocityIsFound) {
     const double t = i / kFps;
     const Eigen::Vector3d p =
         start + velocity * t + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
-    objects = tracker.Update(100.0 + t, {Observe(p, Eigen::Vector3d(0.2, 0.4, 0.6))});
+    objects = tracker.Update(100.0 + t, {Observe(p, Eigen::Vector3d(0.2, 0.4, 0.6), velocity)});
     if (i < ObjectsConfig().min_hits - 1) {
       EXPECT_TRUE(objects.empty()) << i;
     }
@@ -54,7 +60,9 @@ TEST(ObjectTracker, CrossingMoversOfDifferentColoursKeepTheirIds) {
     const double t = i / kFps;
     // They pass 0.2 m apart (in y) at t = 1 s: position alone would be ambiguous there.
     const Eigen::Vector3d a(-1.0 + t, 0.0, 3.0), b(1.0 - t, 0.2, 3.0);
-    for (const TrackedObject& o : tracker.Update(t, {Observe(a, red), Observe(b, blue)})) {
+    const Eigen::Vector3d east(1, 0, 0), west(-1, 0, 0);
+    for (const TrackedObject& o :
+         tracker.Update(t, {Observe(a, red, east), Observe(b, blue, west)})) {
       if (i > 45) x_of_id[o.id] = o.velocity_world.x();
     }
   }
@@ -69,11 +77,13 @@ TEST(ObjectTracker, TracksUnseenTooLongAreDroppedAndNewOnesGetNewIds) {
   const Eigen::Vector3d grey(0.5, 0.5, 0.5);
   for (int i = 0; i < 10; ++i) tracker.Update(i / kFps, {Observe({0, 0, 2}, grey)});
   EXPECT_EQ(tracker.track_count(), 1);
-  // Frames without observations: kept while unseen for at most max_unseen_s.
+  // Frames without observations: reported (predicted) for coast_s, kept while unseen for at
+  // most max_unseen_s.
   double t = 9 / kFps;
   while (t < 9 / kFps + config.max_unseen_s - 0.05) {
     t += 1 / kFps;
-    EXPECT_TRUE(tracker.Update(t, {}).empty());
+    const bool coasting = t - 9 / kFps <= config.coast_s;
+    EXPECT_EQ(tracker.Update(t, {}).size(), coasting ? 1u : 0u) << t;
   }
   EXPECT_EQ(tracker.track_count(), 1);
   t += 0.1;
@@ -105,6 +115,65 @@ TEST(ObjectTracker, FarObservationStartsASecondTrackInsteadOfJumping) {
   EXPECT_EQ(tracker.track_count(), 2);
 }
 
+TEST(ObjectTracker, AThingWhosePointsNeverMoveIsNeverReported) {
+  // A static surface whose points the front end left unmarked: observed in every frame, its
+  // centroid jittering by region changes, its points still.
+  ObjectTracker tracker{ObjectsConfig()};
+  std::mt19937 rng(3);
+  std::normal_distribution<double> jitter(0.0, 0.1);
+  for (int i = 0; i < 60; ++i) {
+    const Eigen::Vector3d p(1.0 + jitter(rng), jitter(rng), 4.0);
+    EXPECT_TRUE(tracker
+                    .Update(i / kFps, {Observe(p, Eigen::Vector3d(0.5, 0.5, 0.5),
+                                               Eigen::Vector3d(0.05, 0.0, 0.0))})
+                    .empty());
+  }
+  EXPECT_EQ(tracker.track_count(), 1);
+}
+
+TEST(ObjectTracker, AWalkerWhoStopsStaysReportedWithZeroVelocity) {
+  ObjectTracker tracker{ObjectsConfig()};
+  const Eigen::Vector3d grey(0.5, 0.5, 0.5);
+  Eigen::Vector3d p(0.0, 0.0, 2.0);
+  std::vector<TrackedObject> objects;
+  for (int i = 0; i < 90; ++i) {
+    const Eigen::Vector3d v = i < 30 ? Eigen::Vector3d(1.0, 0.0, 0.0) : Eigen::Vector3d::Zero();
+    p += v / kFps;
+    objects = tracker.Update(i / kFps, {Observe(p, grey, v)});
+  }
+  ASSERT_EQ(objects.size(), 1u);
+  EXPECT_LT(objects[0].velocity_world.norm(), 0.05);
+}
+
+TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps) {
+  // Ten points moving at (1, 0, 0.5) m/s seen in the last frames, one of them re-matched 3 m away
+  // (a jump, not a motion), and the frame 0.5 s ago beyond both baselines.
+  ObjectsConfig config;
+  const Eigen::Vector3d velocity(1.0, 0.0, 0.5);
+  DynamicMask mask;
+  DynamicRegion region;
+  region.cells = 500;
+  std::deque<PointPositions> history(3);
+  history[0].stamp_s = 9.5;
+  history[1].stamp_s = 10.0 - 0.2;
+  history[2].stamp_s = 10.0 - 1.0 / kFps;
+  for (int k = 0; k < 10; ++k) {
+    const Eigen::Vector3d p_now(0.1 * k, 0.05 * k, 2.0);
+    region.points.push_back(k);
+    region.points_world.push_back(k == 0 ? p_now + Eigen::Vector3d(0, 0, 3) : p_now);
+    history[0].by_id[k] = p_now - 0.5 * Eigen::Vector3d(9, 9, 9);
+    history[1].by_id[k] = p_now - 0.2 * velocity;
+    history[2].by_id[k] = p_now - velocity / kFps;
+  }
+  mask.regions = {region};
+  const std::vector<ObjectObservation> observations =
+      ObservationsFromMask(mask, config, 10.0, history);
+  ASSERT_EQ(observations.size(), 1u);
+  ASSERT_TRUE(observations[0].has_velocity);
+  EXPECT_LT((observations[0].velocity_world - velocity).norm(), 1e-9);
+  EXPECT_NEAR(observations[0].motion_speed_mps, velocity.norm(), 1e-9);
+}
+
 TEST(ObservationsFromMask, SmallRegionsAreLeftOut) {
   DynamicMask mask;
   DynamicRegion big, few_points, few_cells;
@@ -117,7 +186,8 @@ TEST(ObservationsFromMask, SmallRegionsAreLeftOut) {
   few_cells = big;
   few_cells.cells = 3;
   mask.regions = {big, few_points, few_cells};
-  const std::vector<ObjectObservation> observations = ObservationsFromMask(mask, ObjectsConfig());
+  const std::vector<ObjectObservation> observations =
+      ObservationsFromMask(mask, ObjectsConfig(), 0.0, {});
   ASSERT_EQ(observations.size(), 1u);
   EXPECT_EQ(observations[0].extent, Eigen::Vector3d(0.4, 1.8, 0.3));
   EXPECT_EQ(observations[0].points, 10);

@@ -59,7 +59,14 @@ struct ObjectsConfig {
   double colour_weight_m = 0.3;
   double acceleration_sigma_mps2 = 3.0;
   double position_sigma_m = 0.08;
+  double velocity_sigma_mps = 0.3;
+  int min_velocity_points = 3;
+  double velocity_baseline_s = 0.034;
+  double motion_baseline_s = 0.25;
+  double max_point_speed_mps = 4.0;
   int min_hits = 3;
+  double min_speed_mps = 0.2;
+  double coast_s = 0.2;
   double max_unseen_s = 1.0;
 
   template <typename Self, typename Visitor>
@@ -79,8 +86,35 @@ struct ObjectsConfig {
       s.acceleration_sigma_mps2);
     v(Field("position_sigma_m", "m", 0.001, 10.0, "noise of an observed centroid"),
       s.position_sigma_m);
-    // A track is reported from its min_hits-th observation on: single-frame mislabels are not.
+    // An object's velocity is also measured directly: the per-axis median of its unmarked
+    // points' displacements since the previous frame (the same point ids, re-measured in each
+    // frame), when at least min_velocity_points points were seen in both.
+    v(Field("velocity_sigma_mps", "m/s", 0.001, 100.0, "noise of an observed point velocity"),
+      s.velocity_sigma_mps);
+    v(Field("min_velocity_points", "-", 1, 10000, "points an observed velocity needs"),
+      s.min_velocity_points);
+    // Each point's velocity is taken from its oldest position within a baseline: the filter's
+    // velocity measurement over velocity_baseline_s (short: it follows a walker's stops and
+    // starts; 0.034 s = the previous frame at 30 Hz), whether a track moves at all over
+    // motion_baseline_s (long: depth noise of static points averages out).
+    v(Field("velocity_baseline_s", "s", 0.001, 2.0, "baseline of the filter's point velocity"),
+      s.velocity_baseline_s);
+    v(Field("motion_baseline_s", "s", 0.001, 2.0, "baseline of the point speed for min_speed_mps"),
+      s.motion_baseline_s);
+    // A faster point was matched to another thing's feature, e.g. a point of a person who left
+    // re-matched on the wall behind: left out of the median.
+    v(Field("max_point_speed_mps", "m/s", 0.01, 1000.0, "faster point velocities are outliers"),
+      s.max_point_speed_mps);
+    // A track is reported once min_hits consecutive observations had a point velocity of at
+    // least min_speed_mps: static surfaces mislabelled for a while are not objects. A walker that
+    // stops stays reported (it moved before).
     v(Field("min_hits", "-", 1, 1000, "observations before a track is reported"), s.min_hits);
+    v(Field("min_speed_mps", "m/s", 0.0, 100.0, "speed a track must reach to be reported"),
+      s.min_speed_mps);
+    // Short gaps (no observation: too few unmarked points in a frame) are bridged by the
+    // filter's prediction.
+    v(Field("coast_s", "s", 0.0, 60.0, "a reported track unseen for up to this is still reported"),
+      s.coast_s);
     v(Field("max_unseen_s", "s", 0.0, 60.0, "a track unseen for longer is dropped"),
       s.max_unseen_s);
   }

@@ -32,7 +32,9 @@ namespace dslam {
 struct DynamicRegion {
   uint16_t label = 0;           ///< value of its cells in DynamicMask::labels (1-based)
   std::vector<PointId> points;  ///< the unmarked points that seeded it
-  int cells = 0;                ///< mask cells it covers
+  /// [m] those points measured in this frame (depth at their pixels), world frame; same order.
+  std::vector<Eigen::Vector3d> points_world;
+  int cells = 0;  ///< mask cells it covers
   /// [m] mean of its cells' back-projected points, world frame (the T_world_camera given).
   Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();
   Eigen::Vector3d min_world = Eigen::Vector3d::Zero();  ///< [m] axis-aligned box, world frame

@@ -4,6 +4,7 @@
 // Runs on the thread that consumes FrameResults (the tracking thread of dslam_run_dataset, the
 // node's worker), after Slam::ProcessFrame.
 
+#include <deque>
 #include <vector>
 
 #include "dslam/core/config.h"
@@ -29,13 +30,17 @@ class MovingObjectTracker {
   const DynamicMask& last_mask() const { return mask_; }
 
   /// Forgets the tracks (Slam::Reset).
-  void Reset() { tracker_.Reset(); }
+  void Reset() {
+    tracker_.Reset();
+    history_.clear();
+  }
 
  private:
   DynamicMaskConfig mask_config_;
   ObjectsConfig objects_config_;
   ObjectTracker tracker_;
   DynamicMask mask_;
+  std::deque<PointPositions> history_;  ///< recent frames' unmarked points, oldest first
 };
 
 }  // namespace dslam

@@ -1,11 +1,15 @@
 #pragma once
 // Moving objects tracked across frames: the dynamic mask's regions (dynamic_mask.h) become
 // observations; each is associated with a track by predicted position and colour (greedy, lowest
-// cost first, gated), and each track filters its centroid with a constant-velocity Kalman filter.
-// A track is reported from its ObjectsConfig::min_hits-th observation on, in the frames where it
-// is observed, and dropped after ObjectsConfig::max_unseen_s without an observation. Positions,
-// velocities and extents are in the odometry (world) frame of the poses given.
+// cost first, gated), and each track filters its centroid (and its points' velocity) with a
+// constant-velocity Kalman filter. A track is reported once it moved (point speeds over
+// motion_baseline_s of at least ObjectsConfig::min_speed_mps in min_hits consecutive observations:
+// a static surface whose points were mislabelled never does), in the frames where it is observed
+// and for coast_s after (predicted), and dropped after max_unseen_s unseen. Positions, velocities
+// and extents are in the odometry (world) frame of the poses given.
 
+#include <deque>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,7 +25,26 @@ struct ObjectObservation {
   Eigen::Vector3d extent = Eigen::Vector3d::Zero();  ///< [m] full size of its box (world axes)
   Eigen::Vector3d colour = Eigen::Vector3d::Zero();  ///< [0, 1] mean colour (B, G, R)
   int points = 0;                                    ///< unmarked points it holds
+  /// [m/s] median (per axis) of its points' velocities, each from the point's oldest position
+  /// in the recent frames (PointPositions history, at most ObjectsConfig::velocity_baseline_s old)
+  /// to this one, world frame; valid when has_velocity (at least ObjectsConfig::min_velocity_points
+  /// points).
+  Eigen::Vector3d velocity_world = Eigen::Vector3d::Zero();
+  bool has_velocity = false;
+  /// [m/s] speed of the same median over the longer ObjectsConfig::motion_baseline_s (whether
+  /// it moves at all: depth noise averaged over more frames); 0 when not measured.
+  double motion_speed_mps = 0.0;
 };
+
+/// World positions of the unmarked points of one frame, by id: the recent frames' positions, from
+/// which ObservationsFromMask measures the points' velocities.
+struct PointPositions {
+  double stamp_s = 0.0;                                ///< [s]
+  std::unordered_map<PointId, Eigen::Vector3d> by_id;  ///< [m] world frame
+};
+
+/// The positions of the points seeding `mask`'s regions, stamped `stamp_s` [s].
+PointPositions PositionsOf(const DynamicMask& mask, double stamp_s);
 
 /// A tracked moving object as reported for one frame.
 struct TrackedObject {
@@ -33,10 +56,12 @@ struct TrackedObject {
   double age_s = 0.0;                                ///< [s] since the track's first observation
 };
 
-/// The observations of one frame: the mask's regions with at least ObjectsConfig::min_points
-/// points and min_cells cells.
+/// The observations of one frame stamped `stamp_s` [s]: the mask's regions with at least
+/// ObjectsConfig::min_points points and min_cells cells; their velocities from `history` (the
+/// recent frames' PositionsOf, oldest first; entries older than velocity_baseline_s are ignored).
 std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
-                                                    const ObjectsConfig& config);
+                                                    const ObjectsConfig& config, double stamp_s,
+                                                    const std::deque<PointPositions>& history);
 
 /// Tracks of moving objects over a sequence of frames (one thread).
 class ObjectTracker {
@@ -63,6 +88,8 @@ class ObjectTracker {
     ObjectObservation last;
     double first_seen_s = 0.0, last_seen_s = 0.0;
     int hits = 0;
+    int moving_streak = 0;  ///< consecutive observations with a point velocity >= min_speed_mps
+    bool moved = false;     ///< moving_streak reached min_hits once
   };
 
   void Predict(Track* track, double dt_s) const;

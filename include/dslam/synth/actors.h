@@ -39,6 +39,10 @@ struct WalkerState {
 /// State of `walker` at `t_s` [s].
 WalkerState WalkerStateAt(const WalkerParams& walker, double t_s);
 
+/// [m/s] Velocity of the walker's floor point (world, z = 0) at `t_s` [s]: the walking speed along
+/// the heading of the current path segment while walking, zero while pausing at a waypoint.
+Eigen::Vector3d WalkerVelocityAt(const WalkerParams& walker, double t_s);
+
 /// Appends the walker's 10 boxes (torso, head, upper/lower arms, thighs, shins) at `t_s`.
 void AppendWalker(const WalkerParams& walker, double t_s, uint16_t object_id, SceneGeometry* scene);
 
@@ -51,6 +55,13 @@ struct MovingBoxParams {
   double yaw_rate_dps = 0.0;              ///< [deg/s] rotation about the vertical axis
   uint32_t look_seed = 1;
 };
+
+/// [m] Centre of the moving box (world) at `t_s` [s].
+Eigen::Vector3d MovingBoxCentreAt(const MovingBoxParams& box, double t_s);
+
+/// [m/s] Velocity of the moving box's centre (world) at `t_s` [s]: speed_mps towards end_m on the
+/// way out, towards start_m on the way back; zero when start_m == end_m.
+Eigen::Vector3d MovingBoxVelocityAt(const MovingBoxParams& box, double t_s);
 
 /// Appends the moving box at `t_s`.
 void AppendMovingBox(const MovingBoxParams& box, double t_s, uint16_t object_id,

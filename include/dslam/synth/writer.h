@@ -3,6 +3,9 @@
 //   camera.yaml, rgb.txt + rgb/<stamp>.png (8-bit BGR), depth.txt + depth/<stamp>.png (16-bit,
 //   depth_scale units per metre), groundtruth.txt (T_world_camera, TUM format),
 //   mask.txt + mask/<stamp>.png (16-bit object id, 0 = static),
+//   depth_true.txt + depth_true/<stamp>.png (16-bit noise-free depth, same scale as depth/),
+//   objects.txt (object_truth.h: per frame and visible moving object
+//   `timestamp id x y z vx vy vz pixel_share`, world frame),
 //   dynamic_coverage.txt (`timestamp fraction_of_pixels_on_moving_objects`), synth_info.txt.
 
 #include <functional>
@@ -34,6 +37,10 @@ WriteSummary WriteSequence(const SyntheticSequence& sequence, const std::string&
 
 /// A half-size panel: colour | depth (colourised, black = no depth) | mask (one colour per id).
 cv::Mat MakePreviewPanel(const SyntheticFrame& frame, double max_depth_m);
+
+/// The noise-free depth `depth_true_m` (CV_32FC1 [m]) as written to depth_true/: CV_16UC1,
+/// round(depth * depth_scale) [units], 0 where nothing was hit or beyond 65535 units.
+cv::Mat NoiseFreeDepthUnits(const cv::Mat& depth_true_m, double depth_scale);
 
 /// Formats a stamp as in the file names and lists ("%.6f").
 std::string FormatStamp(double stamp_s);
