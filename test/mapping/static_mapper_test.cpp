@@ -115,6 +115,24 @@ TEST(StaticMapper, DynamicMasksLeaveTheMovingPixelsOut) {
             VoxelsOfSamples(kPlaneDepthM, false) + VoxelsOfSamples(1.51, true));
 }
 
+TEST(StaticMapper, RejectsAnInvalidConfigNamingTheParameter) {
+  const auto error_of = [](const Config& config) -> std::string {
+    try {
+      StaticMapper mapper(config);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Config config = MapTestConfig();
+  config.map.voxel_size_m = 0.0;
+  EXPECT_NE(error_of(config).find("map.voxel_size_m"), std::string::npos);
+  config = MapTestConfig();
+  config.map.extent_m = 0.2;
+  config.map.voxel_size_m = 0.5;
+  EXPECT_NE(error_of(config).find("map.extent_m"), std::string::npos);
+}
+
 TEST(Pcd, WritesAndReadsColouredPoints) {
   const std::string path = ::testing::TempDir() + "dslam_map_test.pcd";
   const ColouredCloud cloud = {{Eigen::Vector3f(1.5f, -2.25f, 3.0f), 255, 0, 10},
