@@ -5,9 +5,10 @@
 #
 # Usage: scripts/sanitize.sh KIND
 #   thread   ThreadSanitizer, workspace build/tsan: test_slam_threads (the back-end thread against
-#            the synchronous mode, Reset and destruction with work queued), then
-#            `dslam_run_dataset --threads --backend on` on $DSLAM_SANITIZE_FRAMES (80) frames of
-#            the synthetic `walking` scenario, seed 1.
+#            the synchronous mode, Reset and destruction with work queued, keyframe observers),
+#            test_static_map_slam (the static map fused on the back-end thread while another
+#            thread reads it), then `dslam_run_dataset --threads --backend on --map --map-unmasked`
+#            on $DSLAM_SANITIZE_FRAMES (80) frames of the synthetic `walking` scenario, seed 1.
 #   address  AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (undefined behaviour
 #            aborts like a memory error), workspace build/asan: every gtest binary of dslam (each
 #            `dslam_test(...)` in test/*/CMakeLists.txt: the ROS-free parts and the ros part;
@@ -53,7 +54,7 @@ all_gtests() {
 }
 
 case "$KIND" in
-  thread) TARGETS=(dslam_run_dataset_main dslam_synth_main test_slam_threads) ;;
+  thread) TARGETS=(dslam_run_dataset_main dslam_synth_main test_slam_threads test_static_map_slam) ;;
   address)
     read -r -a GTESTS <<< "${DSLAM_SANITIZE_TESTS:-$(all_gtests | tr '\n' ' ')}"
     TARGETS=("${GTESTS[@]}") ;;
@@ -125,12 +126,13 @@ run_gtest() {
 case "$KIND" in
   thread)
     run_sanitized test_slam_threads "$BIN/test_slam_threads"
+    run_sanitized test_static_map_slam "$BIN/test_static_map_slam"
     SEQUENCE="$WS/sequences/walking_f${FRAMES}_s1"
     [[ -f "$SEQUENCE/groundtruth.txt" ]] || run_sanitized synth "$BIN/dslam_synth" \
       --scenario walking --frames "$FRAMES" --seed 1 --output "$SEQUENCE"
     run_sanitized run_dataset "$BIN/dslam_run_dataset" --dataset "$SEQUENCE" \
       --trajectory "$REPORTS/trajectory.txt" --summary "$REPORTS/summary.json" --threads \
-      --backend on --quiet ;;
+      --backend on --map "$REPORTS/map.pcd" --map-unmasked "$REPORTS/map_unmasked.pcd" --quiet ;;
   address)
     export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
     for test in "${GTESTS[@]}"; do run_gtest "$test"; done ;;

@@ -6,29 +6,91 @@
 
 namespace dslam {
 
-Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined)
-    : mode_(mode), refined_recording_(refined), odometry_(config) {
+Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined,
+           std::vector<std::shared_ptr<KeyFrameObserver>> observers)
+    : mode_(mode),
+      refined_recording_(refined),
+      observers_(std::move(observers)),
+      odometry_(config) {
   if (mode_ == BackEndMode::kThreaded) back_end_ = std::thread(&Slam::BackEndLoop, this);
 }
 
 FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
   const Stopwatch tracking;  // this thread's time: waiting for the lock, front end, bookkeeping
-  const Lock lock(map_mutex_);
+  Lock lock(map_mutex_);
   RethrowBackEndError();
   // Front end (Sec. V-A, V-B): features, local-map matching, pose from static points, front-end
-  // static point determination, map management and keyframes.
-  FrameResult result = odometry_.ProcessFrame(frame, request);
-  if (result.reset) DropBackEndWork();  // the old world's keyframes and runs
+  // static point determination, map management and keyframes. The observers need the labels.
+  FrameRequest front_end_request = request;
+  if (!observers_.empty()) front_end_request.points = true;
+  FrameResult result = odometry_.ProcessFrame(frame, front_end_request);
+  if (result.reset) {
+    DropBackEndWork();  // the old world's keyframes and runs
+    QueueReset(ResetMode::kNewWorld);
+  }
+  if (!observers_.empty()) QueueKeyFrame(frame, request.points, &result);
   if (result.has_pose && refined_recording_ == RefinedPoseRecording::kOn) {
     refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
   }
   if (mode_ == BackEndMode::kThreaded) ExchangeWithBackEnd(&result);
   result.times.tracking_ms = tracking.ElapsedMs();
+  if (mode_ == BackEndMode::kThreaded) return result;
   // Back end (Sec. V): local mapping on the window the new keyframe completes.
-  if (mode_ == BackEndMode::kSynchronous && result.keyframe && config().backend.enabled) {
-    result.backend = RunLocalMapping();
-  }
+  if (result.keyframe && config().backend.enabled) result.backend = RunLocalMapping();
+  if (!HasBackEndWork()) return result;  // synchronous: only the observers' events
+  const Delivery delivery = TakeEvents();
+  lock.unlock();
+  Deliver(delivery);
   return result;
+}
+
+void Slam::QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* result) {
+  if (result->keyframe && !map().keyframes().empty()) {
+    const KeyFrame& keyframe = map().keyframes().back();  // made from this frame
+    KeyFrameRecord record;
+    record.id = keyframe.id;
+    record.frame = frame;  // shallow: the images are shared, not copied
+    record.T_world_camera = keyframe.T_world_camera;
+    record.points = keep_points ? result->points : std::move(result->points);
+    events_.keyframes.push_back(std::move(record));
+  }
+  if (!keep_points) result->points.clear();
+}
+
+void Slam::QueueReset(ResetMode mode) {
+  if (!observers_.empty()) events_.resets.emplace_back(events_.keyframes.size(), mode);
+}
+
+Slam::Delivery Slam::TakeEvents() {
+  Delivery delivery = std::exchange(events_, Delivery());
+  for (const KeyFrame& keyframe : map().keyframes()) {
+    delivery.window.push_back({keyframe.id, keyframe.T_world_camera});
+  }
+  return delivery;
+}
+
+void Slam::Deliver(const Delivery& delivery) const {
+  // Keyframes in groups between resets; the window's poses belong to the newest group (the
+  // observers forget or fix older groups at the reset that ends them).
+  size_t begin = 0;
+  const auto deliver_keyframes = [&](size_t end) {
+    if (end == begin) return;
+    if (begin == 0 && end == delivery.keyframes.size()) {  // no reset among them: no copy
+      for (const auto& observer : observers_) {
+        observer->OnKeyFrames(delivery.keyframes, delivery.window);
+      }
+    } else {
+      const std::vector<KeyFrameRecord> group(delivery.keyframes.begin() + begin,
+                                              delivery.keyframes.begin() + end);
+      for (const auto& observer : observers_) observer->OnKeyFrames(group, delivery.window);
+    }
+    begin = end;
+  };
+  for (const auto& [keyframes_before, mode] : delivery.resets) {
+    deliver_keyframes(keyframes_before);
+    for (const auto& observer : observers_) observer->OnReset(mode);
+  }
+  deliver_keyframes(delivery.keyframes.size());
 }
 
 BackEndStatus Slam::RunLocalMapping() {
@@ -62,16 +124,25 @@ Slam::~Slam() {
 void Slam::BackEndLoop() {
   Lock lock(map_mutex_);
   for (;;) {
-    work_.wait(lock, [this] { return stop_ || (pending_ > 0 && !held_); });
-    if (stop_) return;  // queued keyframes are dropped
-    pending_ = 0;       // one run for all of them: the window of the newest keyframe
+    work_.wait(lock, [this] { return stop_ || (HasBackEndWork() && !held_); });
+    if (stop_) return;  // queued keyframes and events are dropped
+    const bool run_job = pending_ > 0;
+    pending_ = 0;  // one run for all of them: the window of the newest keyframe
     running_ = true;
     try {
-      LocalMappingJob job(map(), generation_);
-      lock.unlock();  // tracking goes on while the job works on its copy
-      job.Run(config());
-      lock.lock();
-      if (job.generation() == generation_) completed_.push_back(FinishLocalMapping(job));
+      if (run_job) {
+        LocalMappingJob job(map(), generation_);
+        lock.unlock();  // tracking goes on while the job works on its copy
+        job.Run(config());
+        lock.lock();
+        if (job.generation() == generation_) completed_.push_back(FinishLocalMapping(job));
+      }
+      if (!observers_.empty()) {  // the new keyframes and the window as local mapping left it
+        const Delivery delivery = TakeEvents();
+        lock.unlock();
+        Deliver(delivery);
+        lock.lock();
+      }
     } catch (...) {
       if (!lock.owns_lock()) lock.lock();
       error_ = std::current_exception();
@@ -84,10 +155,9 @@ void Slam::BackEndLoop() {
 void Slam::ExchangeWithBackEnd(FrameResult* result) {
   BackEndThreadStatus& thread = result->backend_thread;
   thread.threaded = true;
-  if (result->keyframe && config().backend.enabled) {
-    ++pending_;
-    work_.notify_one();  // the back-end thread starts when this thread releases the lock
-  }
+  if (result->keyframe && config().backend.enabled) ++pending_;
+  // The back-end thread starts when this thread releases the lock.
+  if (HasBackEndWork()) work_.notify_one();
   if (!completed_.empty()) {
     result->backend = completed_.front();
     completed_.pop_front();
@@ -103,9 +173,18 @@ void Slam::RethrowBackEndError() {
 }
 
 void Slam::Reset(ResetMode mode) {
-  const Lock lock(map_mutex_);
+  Lock lock(map_mutex_);
   DropBackEndWork();
   odometry_.Reset(mode);
+  QueueReset(mode);
+  if (observers_.empty()) return;
+  if (mode_ == BackEndMode::kThreaded) {
+    work_.notify_one();
+    return;
+  }
+  const Delivery delivery = TakeEvents();
+  lock.unlock();
+  Deliver(delivery);
 }
 
 void Slam::DropBackEndWork() {
@@ -120,7 +199,7 @@ void Slam::WaitForBackEnd() {
     held_ = false;
     work_.notify_all();
   }
-  idle_.wait(lock, [this] { return pending_ == 0 && !running_; });
+  idle_.wait(lock, [this] { return !HasBackEndWork() && !running_; });
   RethrowBackEndError();
 }
 

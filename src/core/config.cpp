@@ -28,6 +28,9 @@ void Config::Validate() const {
   if (features.fast_threshold_min > features.fast_threshold) {
     throw ConfigError("features.fast_threshold_min must not exceed features.fast_threshold");
   }
+  if (map.extent_m < map.voxel_size_m) {
+    throw ConfigError("map.extent_m must not be smaller than map.voxel_size_m");
+  }
 }
 
 }  // namespace dslam

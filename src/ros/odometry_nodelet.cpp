@@ -24,6 +24,7 @@ OdometryNodelet::~OdometryNodelet() {
   if (info_sub_) info_sub_->unsubscribe();
   slot_.Close();
   if (worker_.joinable()) worker_.join();
+  map_publisher_.reset();  // stops its timer and service (the worker used it until now)
 }
 
 void OdometryNodelet::onInit() {
@@ -34,9 +35,12 @@ void OdometryNodelet::onInit() {
     LoadRosParams(pnh, &config, &config_);
     if (!config_.camera_yaml.empty()) yaml_camera_ = LoadCameraYaml(config_.camera_yaml).camera;
     recorder_ = std::make_unique<TrajectoryRecorder>(config_.trajectory_stream);
+    std::vector<std::shared_ptr<KeyFrameObserver>> observers;
+    if (config.map.enabled) observers.push_back(mapper_ = std::make_shared<StaticMapper>(config));
     slam_ = std::make_unique<Slam>(
         config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous,
-        RefinedPoseRecording::kOff);  // memory stays flat; the node saves causal poses
+        RefinedPoseRecording::kOff,  // memory stays flat; the node saves causal poses
+        observers);
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
     throw std::runtime_error(std::string("dslam: invalid parameters: ") + e.what());
@@ -44,6 +48,7 @@ void OdometryNodelet::onInit() {
   stamps_ = std::make_unique<StampCheck>(config.tracking.max_prediction_gap_s);
   publisher_ = std::make_unique<FramePublisher>(nh, config_);
   objects_publisher_ = std::make_unique<ObjectsPublisher>(nh, slam_->config());
+  if (mapper_) map_publisher_ = std::make_unique<StaticMapPublisher>(nh, config_, mapper_);
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
   static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();

@@ -106,6 +106,7 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
   const Eigen::Isometry3d& T_base_camera = CameraMount(header.frame_id, header.stamp);
   const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
   publisher_->Publish(result, frame, header, T_base_camera, Counters(), latency_ms);
+  if (map_publisher_) map_publisher_->SetMount(T_base_camera);
   std_msgs::Header odom_header = header;
   odom_header.frame_id = config_.odom_frame;
   objects_publisher_->Publish(frame, result, odom_header, T_base_camera);

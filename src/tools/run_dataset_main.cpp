@@ -2,7 +2,8 @@
 // deterministic by default, or with the back end on its own thread as in the ROS node) on a
 // TUM-layout folder, optionally at a fixed frame rate, and writes the trajectory (every tracked
 // frame's pose as estimated at that frame, TUM format, camera optical frame), a per-frame status
-// CSV and a summary. On synthetic folders (mask.txt present) it also scores the labels.
+// CSV and a summary. On synthetic folders (mask.txt present) it also scores the labels. Options:
+// run_dataset_args.h; moving objects: objects_output.h; static maps: map_output.h.
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,79 +26,13 @@
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "map_output.h"
 #include "objects_output.h"
+#include "run_dataset_args.h"
 
 namespace {
 
-struct Args {
-  std::string dataset, camera, trajectory, status, config, summary, segmentation;
-  std::string refined_trajectory;  ///< every frame on its reference keyframe after the last BA
-  std::string objects;             ///< moving objects file (objects_output.h)
-  std::string static_points;       ///< "on", "off" or empty (the config's static_points.enabled)
-  std::string backend;             ///< "on", "off" or empty (the config's backend.enabled)
-  int max_frames = -1;
-  bool quiet = false;
-  bool threads = false;  ///< the back end on its own thread (BackEndMode::kThreaded)
-  /// [Hz] --rate: frame i is handed over no earlier than start + i / rate_hz; 0: at once.
-  double rate_hz = 0.0;
-};
-
-int Usage() {
-  std::cerr << "usage: dslam_run_dataset --dataset FOLDER --trajectory OUT.txt [--camera "
-               "camera.yaml]\n"
-               "                         [--status OUT.csv] [--static-points on|off] "
-               "[--backend on|off] [--config params.yaml]\n"
-               "                         [--summary OUT.json] [--segmentation OUT.csv] "
-               "[--max-frames N] [--quiet]\n"
-               "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
-               "                         [--objects OUT.txt]\n";
-  return 2;
-}
-
-bool Parse(int argc, char** argv, Args* args) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (key == "--quiet") {
-      args->quiet = true;
-      continue;
-    }
-    if (key == "--threads") {
-      args->threads = true;
-      continue;
-    }
-    if (i + 1 >= argc) return false;
-    const std::string value = argv[++i];
-    if (key == "--dataset")
-      args->dataset = value;
-    else if (key == "--camera")
-      args->camera = value;
-    else if (key == "--trajectory")
-      args->trajectory = value;
-    else if (key == "--objects")
-      args->objects = value;
-    else if (key == "--refined-trajectory")
-      args->refined_trajectory = value;
-    else if (key == "--status")
-      args->status = value;
-    else if (key == "--config")
-      args->config = value;
-    else if (key == "--summary")
-      args->summary = value;
-    else if (key == "--segmentation")
-      args->segmentation = value;
-    else if (key == "--max-frames")
-      args->max_frames = std::stoi(value);
-    else if (key == "--rate" && std::stod(value) > 0.0)
-      args->rate_hz = std::stod(value);
-    else if (key == "--static-points" && (value == "on" || value == "off"))
-      args->static_points = value;
-    else if (key == "--backend" && (value == "on" || value == "off"))
-      args->backend = value;
-    else
-      return false;
-  }
-  return !args->dataset.empty() && !args->trajectory.empty();
-}
+using Args = dslam::tools::RunDatasetArgs;
 
 // Masks by colour stamp (synthetic folders); empty when the folder has no mask.txt.
 std::map<double, std::string> ReadMasks(const std::string& folder) {
@@ -272,12 +207,15 @@ int Run(const Args& args) {
   if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
   if (!args.backend.empty()) config.backend.enabled = args.backend == "on";
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
+  dslam::tools::MapOutput maps(args.map, args.map_unmasked, config);
   dslam::Slam slam(config,
-                   args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous);
+                   args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous,
+                   dslam::RefinedPoseRecording::kOn, maps.Observers());
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
   if (out.objects) out.objects->Close();
+  maps.Write();
   dslam::WriteTumTrajectory(args.trajectory, out.trajectory);
   if (!args.refined_trajectory.empty()) {
     dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
@@ -288,8 +226,10 @@ int Run(const Args& args) {
                 out.objects->object_frames(), dslam::Median(out.objects->times_ms()),
                 args.objects.c_str());
   }
+  maps.Print();
   if (!args.summary.empty()) {
     dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
+    maps.AddTo(&json);
     if (out.objects) {  // the tracking thread's extra time per frame for --objects
       json.AddNumber("median_objects_ms", dslam::Median(out.objects->times_ms()), 6)
           .AddNumber("p95_objects_ms", dslam::Quantile(out.objects->times_ms(), 0.95), 6)
@@ -306,10 +246,10 @@ int main(int argc, char** argv) {
   Args args;
   bool parsed = false;
   try {
-    parsed = Parse(argc, argv, &args);
+    parsed = dslam::tools::Parse(argc, argv, &args);
   } catch (const std::exception&) {  // a number that does not parse (std::stoi, std::stod)
   }
-  if (!parsed) return Usage();
+  if (!parsed) return dslam::tools::Usage();
   try {
     return Run(args);
   } catch (const std::exception& e) {

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """rostest: plays a freshly generated synthetic bag into the dslam nodelet and checks that
 odometry, TF, both clouds, graph markers and status arrive, and that the saved trajectory matches
-the ground truth within a tolerance after SE(3) alignment (dslam_eval's ATE). With the private
+the ground truth within a tolerance after SE(3) alignment (dslam_eval's ATE); that the static map
+arrives on `static_map` (latched: also to a subscriber that comes late) and that `save_map` writes
+it as a PCD file with fields x y z rgb (and fails on a path it cannot write). With the private
 parameter ~expect_backend (odometry_bag_backend.test: the back end on, on its own thread), the
 status messages must also report back-end runs delivered by later frames."""
 
@@ -10,6 +12,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import time
 import unittest
 
 import rospkg
@@ -21,13 +24,14 @@ from tf2_msgs.msg import TFMessage
 from visualization_msgs.msg import MarkerArray
 
 from dslam.msg import FrameStatus
-from dslam.srv import SaveTrajectory
+from dslam.srv import SaveMap, SaveTrajectory
 
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import trajectory as traj  # noqa: E402
 
 FRAMES = 60
 ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
+MIN_MAP_POINTS = 10000  # static_room, 60 frames: 24957 points measured (5 cm voxels)
 
 
 class Recorder:
@@ -58,7 +62,7 @@ class OdometryBagTest(unittest.TestCase):
         rec = Recorder()
         topics = [("odom", Odometry), ("static_points", PointCloud2),
                   ("dynamic_points", PointCloud2), ("graph_edges", MarkerArray),
-                  ("status", FrameStatus)]
+                  ("status", FrameStatus), ("static_map", PointCloud2)]
         subs = [rospy.Subscriber("/dslam/" + t, c, rec.callback(t), queue_size=100)
                 for t, c in topics]
         subs.append(rospy.Subscriber("/tf", TFMessage, rec.callback("tf"), queue_size=100))
@@ -68,7 +72,8 @@ class OdometryBagTest(unittest.TestCase):
                                "/camera/rgb/image_color", "/camera/depth/image",
                                "/camera/rgb/camera_info"])
         rospy.sleep(2.0)
-        for name in ["odom", "static_points", "dynamic_points", "graph_edges", "status", "tf"]:
+        for name in ["odom", "static_points", "dynamic_points", "graph_edges", "status", "tf",
+                     "static_map"]:
             self.assertGreater(rec.counts.get(name, 0), 0, "nothing received on " + name)
         status = rec.last["status"]
         self.assertEqual(status.frames_received, FRAMES)
@@ -87,6 +92,44 @@ class OdometryBagTest(unittest.TestCase):
         self.assertTrue(all(s.tracking_ms > 0.0 for s in rec.statuses))
         if rospy.get_param("~expect_backend", False):
             self.check_backend(rec.statuses)
+        self.check_static_map(rec, work)
+
+    def check_static_map(self, rec, work):
+        """The last static_map message, a late subscriber's latched copy and save_map's file."""
+        save = rospy.ServiceProxy("/dslam/save_map", SaveMap)
+        path = os.path.join(work, "map.pcd")
+        # The bag ended; the back end may still be fusing its last keyframes, and the map is
+        # published at static_map_rate_hz (1 Hz) after a change: wait until both agree.
+        deadline = time.time() + 10.0
+        while True:
+            result = save(path)
+            self.assertTrue(result.success, result.message)
+            with rec.lock:
+                cloud = rec.last["static_map"]
+            points = cloud.width * cloud.height
+            if result.points == points or time.time() > deadline:
+                break
+            rospy.sleep(0.5)
+        self.assertEqual(result.points, points)
+        self.assertEqual(cloud.header.frame_id, "odom")
+        self.assertEqual([f.name for f in cloud.fields], ["x", "y", "z", "rgb"])
+        rospy.loginfo("odometry_bag_check: static_map with %d points", points)
+        self.assertGreater(points, MIN_MAP_POINTS)
+        late = rospy.wait_for_message("/dslam/static_map", PointCloud2, timeout=5.0)
+        self.assertEqual(late.width * late.height, points)
+        header = {}
+        with open(path, "rb") as pcd:
+            for raw in pcd:
+                key, _, value = raw.decode("ascii").strip().partition(" ")
+                header[key] = value
+                if key == "DATA":
+                    break
+        self.assertEqual(header["FIELDS"], "x y z rgb")
+        self.assertEqual(int(header["POINTS"]), points)
+        self.assertEqual(header["DATA"], "binary")
+        bad = rospy.ServiceProxy("/dslam/save_map", SaveMap)("/nonexistent/folder/map.pcd")
+        self.assertFalse(bad.success)
+        self.assertIn("/nonexistent/folder/map.pcd", bad.message)
 
     def check_backend(self, statuses):
         """The back end on its own thread: local BA ran (reported by a later frame, flagged),

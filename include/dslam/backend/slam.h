@@ -25,15 +25,25 @@
 // - Every other public member (Reset, WaitForBackEnd, TakeUnreportedRuns, HoldBackEnd,
 //   RefinedPoses, MapSnapshot) takes it; getters return copies, never references into the map.
 //   config() is immutable.
+// - Keyframe observers (keyframe_observer.h, given to the constructor; the static map): under the
+//   lock the tracking thread queues each new keyframe (a shallow copy of its images and its point
+//   labels) and each reset as events. The thread that delivers them takes the queue and the
+//   window's poses under the lock and calls the observers after releasing it: threaded, the
+//   back-end thread after its local mapping run (or without one when the back end is off);
+//   synchronous, the caller at the end of ProcessFrame and Reset. Observers may take locks of
+//   their own: none is ever held together with the map mutex.
 // Nothing else is shared between the threads; no other lock is taken while it is held.
 
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
+#include "dslam/backend/keyframe_observer.h"
 #include "dslam/backend/local_bundle_adjustment.h"
 #include "dslam/backend/local_mapping_job.h"
 #include "dslam/backend/refined_trajectory.h"
@@ -62,10 +72,12 @@ enum class RefinedPoseRecording {
 /// (locking policy above).
 class Slam {
  public:
-  /// Starts the back-end thread in BackEndMode::kThreaded. Throws ConfigError when `config` is
-  /// invalid.
+  /// Starts the back-end thread in BackEndMode::kThreaded. `observers` receive every keyframe
+  /// and reset (locking policy above); with any, every frame's FrameResult::points are computed
+  /// (returned only when the request asks for them). Throws ConfigError when `config` is invalid.
   explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous,
-                RefinedPoseRecording refined = RefinedPoseRecording::kOn);
+                RefinedPoseRecording refined = RefinedPoseRecording::kOn,
+                std::vector<std::shared_ptr<KeyFrameObserver>> observers = {});
   /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued.
   ~Slam();
   Slam(const Slam&) = delete;
@@ -85,11 +97,14 @@ class Slam {
 
   /// Drops queued keyframes, unreported runs and the results of a run in progress (which goes on
   /// with its own copy of the window), then resets the odometry (Odometry::Reset): the next frame
-  /// initialises at the last tracked pose (kKeepPose) or at the world origin (kNewWorld).
+  /// initialises at the last tracked pose (kKeepPose) or at the world origin (kNewWorld). The
+  /// observers see the reset after the keyframes made before it (threaded: on the back-end
+  /// thread, WaitForBackEnd waits for it).
   void Reset(ResetMode mode);
 
-  /// Threaded: blocks until no keyframe is queued and no run is in progress (releases a hold
-  /// first). Synchronous: returns at once. Rethrows an exception of the back-end thread.
+  /// Threaded: blocks until no keyframe is queued, no run is in progress and the observers have
+  /// every event (releases a hold first). Synchronous: returns at once. Rethrows an exception of
+  /// the back-end thread.
   void WaitForBackEnd();
 
   /// The completed runs no FrameResult has reported, oldest first; they count as reported (the
@@ -120,27 +135,48 @@ class Slam {
   BackEndStatus RunLocalMapping();
   /// Applies a finished job to the live map and corrects tracking (lock held).
   BackEndStatus FinishLocalMapping(const LocalMappingJob& job);
-  /// The back-end thread: waits for queued keyframes, runs local mapping once for all of them.
+  /// The back-end thread: waits for queued keyframes, runs local mapping once for all of them,
+  /// then delivers the observers' events.
   void BackEndLoop();
   /// Threaded bookkeeping after the front end (queue a keyframe, hand over a run); lock held.
   void ExchangeWithBackEnd(FrameResult* result);
   void RethrowBackEndError();  ///< lock held
-  void DropBackEndWork();      ///< forgets queued keyframes and unreported runs; lock held
+  /// Keyframes queued for local mapping or events for the observers (lock held).
+  bool HasBackEndWork() const {
+    return pending_ > 0 || !events_.keyframes.empty() || !events_.resets.empty();
+  }
+  /// Events for the observers: keyframes and resets in the order they happened, and the
+  /// window's poses when they were taken.
+  struct Delivery {
+    std::vector<KeyFrameRecord> keyframes;             ///< oldest first
+    std::vector<std::pair<size_t, ResetMode>> resets;  ///< (keyframes made before it, mode)
+    std::vector<KeyFramePose> window;                  ///< filled by TakeEvents
+  };
+  /// Queues `result`'s keyframe for the observers (lock held); moves the points out of `result`
+  /// unless `keep_points`.
+  void QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* result);
+  void QueueReset(ResetMode mode);  ///< queues a reset for the observers; lock held
+  Delivery TakeEvents();            ///< the queued events with the window's poses; lock held
+  /// Calls the observers with `delivery`'s events in order (without the lock).
+  void Deliver(const Delivery& delivery) const;
+  void DropBackEndWork();  ///< forgets queued keyframes and unreported runs; lock held
   const Map& map() const { return odometry_.map(); }  ///< lock held
 
   const BackEndMode mode_;
   const RefinedPoseRecording refined_recording_;
+  const std::vector<std::shared_ptr<KeyFrameObserver>> observers_;  ///< as constructed
   mutable std::mutex map_mutex_;  ///< the one lock: guards every member below (policy above)
   Odometry odometry_;
   RefinedTrajectory refined_;
-  std::condition_variable work_;  ///< back-end thread: keyframes queued, hold released or stop
-  std::condition_variable idle_;  ///< WaitForBackEnd: a run finished
-  int pending_ = 0;               ///< [keyframes] queued and not started (the backlog)
-  bool running_ = false;          ///< the back-end thread works on a job (without the lock)
-  uint64_t generation_ = 0;       ///< incremented by each reset: older jobs are dropped
-  bool held_ = false;             ///< HoldBackEnd(true)
-  bool stop_ = false;             ///< the destructor asked the thread to end
+  std::condition_variable work_;         ///< back-end thread: work queued, hold released or stop
+  std::condition_variable idle_;         ///< WaitForBackEnd: a run finished
+  int pending_ = 0;                      ///< [keyframes] queued and not started (the backlog)
+  bool running_ = false;                 ///< the back-end thread works on a job (without the lock)
+  uint64_t generation_ = 0;              ///< incremented by each reset: older jobs are dropped
+  bool held_ = false;                    ///< HoldBackEnd(true)
+  bool stop_ = false;                    ///< the destructor asked the thread to end
   std::deque<BackEndStatus> completed_;  ///< runs not yet reported, oldest first
+  Delivery events_;                      ///< for the observers, not yet taken
   std::exception_ptr error_;             ///< the last run's exception, until rethrown
   std::thread back_end_;                 ///< started last, threaded mode only
 };

@@ -9,6 +9,7 @@
 #include "dslam/core/backend_config.h"
 #include "dslam/core/config_field.h"
 #include "dslam/core/features_config.h"
+#include "dslam/core/map_config.h"
 #include "dslam/core/objects_config.h"
 #include "dslam/core/static_points_config.h"
 #include "dslam/core/tracking_config.h"
@@ -39,6 +40,7 @@ struct Config {
   BackendConfig backend;             ///< local mapping after keyframes (backend_config.h)
   DynamicMaskConfig dynamic_mask;    ///< per-pixel masks of moving things (objects_config.h)
   ObjectsConfig objects;             ///< moving objects tracked across frames (objects_config.h)
+  MapConfig map;                     ///< the static map (map_config.h)
 
   /// Calls `f(name, section)` for every section, in documentation order.
   template <typename Self, typename F>
@@ -52,6 +54,7 @@ struct Config {
     f("backend", s.backend);
     f("dynamic_mask", s.dynamic_mask);
     f("objects", s.objects);
+    f("map", s.map);
   }
 
   /// Throws ConfigError naming the first out-of-range or inconsistent parameter.

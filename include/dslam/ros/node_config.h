@@ -29,6 +29,7 @@ struct NodeConfig {
   double input_timeout_s = 5.0;
   double tf_wait_s = 0.0;
   bool backend_threads = true;
+  double static_map_rate_hz = 1.0;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -70,6 +71,10 @@ struct NodeConfig {
            "back end (backend.enabled) on its own thread beside tracking; false: after each "
            "keyframe on the worker thread"),
       s.backend_threads);
+    v(Field("static_map_rate_hz", "Hz", 0.01, 100.0,
+            "highest rate at which static_map is rebuilt and published (map.enabled; only while "
+            "subscribed and changed)"),
+      s.static_map_rate_hz);
   }
 };
 

@@ -5,6 +5,8 @@
 // ApproximateTime synchronizer): the front end there, the back end on Slam's own thread
 // (~backend_threads, the default) or after each keyframe on the worker; and publishes through
 // FramePublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
+// With map.enabled, a StaticMapper receives Slam's keyframes (on the back-end thread, or on the
+// worker with ~backend_threads false) and StaticMapPublisher serves `static_map` and `save_map`.
 //
 // Threads and locks: the subscriber callbacks only queue input sets (LatestSlot) and count
 // arrivals (watchdog_mutex_); the worker thread alone uses slam_, publisher_, stamps_ and the
@@ -39,8 +41,9 @@
 #include "dslam/ros/frame_publisher.h"
 #include "dslam/ros/input_checks.h"
 #include "dslam/ros/latest_slot.h"
-#include "dslam/ros/objects_publisher.h"
 #include "dslam/ros/node_config.h"
+#include "dslam/ros/objects_publisher.h"
+#include "dslam/ros/static_map_publisher.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -95,9 +98,11 @@ class OdometryNodelet : public nodelet::Nodelet {
   // Front end and back end; used by the worker thread only (in threaded mode Slam also runs its
   // own back-end thread, stopped and joined when slam_ is destroyed, after worker_).
   std::unique_ptr<Slam> slam_;
-  std::unique_ptr<FramePublisher> publisher_;  // used by the worker only
+  std::unique_ptr<FramePublisher> publisher_;            // used by the worker only
   std::unique_ptr<ObjectsPublisher> objects_publisher_;  // used by the worker only
-  std::unique_ptr<StampCheck> stamps_;         // used by the worker only
+  std::shared_ptr<StaticMapper> mapper_;                 // null unless map.enabled (own lock)
+  std::unique_ptr<StaticMapPublisher> map_publisher_;    // timer and service (own lock)
+  std::unique_ptr<StampCheck> stamps_;                   // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;
 

@@ -1,0 +1,56 @@
+#pragma once
+// The hook through which Slam hands its keyframes to consumers above the back end (the static
+// map of part `mapping`) without depending on them: an observer interface declared here and
+// implemented above. Slam calls it with the new keyframes' images and point labels and the
+// window's current (refined) poses, never while it holds its map lock, from one thread at a time
+// (threaded mode: Slam's back-end thread after local mapping; synchronous mode: the caller of
+// ProcessFrame and Reset). See slam.h, "Locking policy".
+
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "dslam/core/rgbd_frame.h"
+#include "dslam/tracking/frame_result.h"
+#include "dslam/tracking/odometry.h"
+
+namespace dslam {
+
+/// One keyframe as the odometry made it, for consumers of its images.
+struct KeyFrameRecord {
+  int id = -1;  ///< KeyFrame::id (unique within a Slam, also across resets)
+  /// The frame it was made from: a shallow copy (cv::Mat shares the caller's pixels, which the
+  /// caller must not overwrite after ProcessFrame returns).
+  RgbdFrame frame;
+  /// [m] optical frame -> world (odometry) frame, as the front end estimated it at this frame.
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+  /// The matched map points with their labels at the end of the frame (FrameResult::points):
+  /// unmarked ones (is_static false) were seen moving.
+  std::vector<ObservedPoint> points;
+};
+
+/// Pose of a keyframe of the current window.
+struct KeyFramePose {
+  int id = -1;                                                       ///< KeyFrame::id
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< [m] optical -> world
+};
+
+/// Receives Slam's keyframes in the order they were made, and its resets in order with them.
+/// Calls never overlap; an exception thrown by a call is rethrown by Slam (as a back-end error).
+class KeyFrameObserver {
+ public:
+  virtual ~KeyFrameObserver() = default;
+
+  /// `added`: keyframes made since the previous call, oldest first (none when only the poses
+  /// changed). `window`: every keyframe in Slam's window now, oldest first, with its current
+  /// pose (refined by local mapping when the back end is on); a keyframe absent from it left the
+  /// window and will not move again.
+  virtual void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
+                           const std::vector<KeyFramePose>& window) = 0;
+
+  /// The odometry was reset (Slam::Reset, or time went backwards: kNewWorld). Keyframes after it
+  /// belong to the new run; with kNewWorld to a new world frame.
+  virtual void OnReset(ResetMode mode) = 0;
+};
+
+}  // namespace dslam

@@ -1,0 +1,69 @@
+#include "dslam/mapping/free_space.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <opencv2/imgproc.hpp>
+
+namespace dslam {
+
+FreeSpaceTolerance FreeSpaceTolerance::From(const MapConfig& config, double min_depth_m) {
+  FreeSpaceTolerance tolerance;
+  tolerance.margin_m = config.free_space_margin_m;
+  tolerance.margin_ratio = config.free_space_margin_ratio;
+  tolerance.min_depth_m = min_depth_m;
+  tolerance.max_depth_m = config.max_depth_m;
+  tolerance.min_misses = config.free_space_min_misses;
+  return tolerance;
+}
+
+DepthView::DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
+                     double min_depth_m)
+    : camera_(frame.camera), block_px_(block_px) {
+  set_pose(T_world_camera);
+  const cv::Mat& depth = frame.depth_m;
+  const float inf = std::numeric_limits<float>::infinity();
+  cv::Mat blocks((depth.rows + block_px - 1) / block_px, (depth.cols + block_px - 1) / block_px,
+                 CV_32FC1, cv::Scalar(inf));
+  for (int v = 0; v < depth.rows; ++v) {
+    const float* row = depth.ptr<float>(v);
+    float* out = blocks.ptr<float>(v / block_px);
+    for (int u = 0; u < depth.cols; ++u) {
+      const float d = row[u];
+      // NaN and infinity fail: no measurement.
+      if (d >= min_depth_m && d < out[u / block_px]) out[u / block_px] = d;
+    }
+  }
+  // The nearest depth of each block's 3x3 neighbourhood (a grey erosion: the minimum).
+  cv::erode(blocks, near_m_, cv::Mat::ones(3, 3, CV_8UC1), cv::Point(-1, -1), 1,
+            cv::BORDER_CONSTANT, cv::Scalar(inf));
+}
+
+void DepthView::set_pose(const Eigen::Isometry3d& T_world_camera) {
+  T_camera_world_ = T_world_camera.inverse().cast<float>();
+}
+
+Visibility DepthView::Vote(const Eigen::Vector3f& p_world,
+                           const FreeSpaceTolerance& tolerance) const {
+  const Eigen::Vector3f p = T_camera_world_ * p_world;
+  const double z = p.z();
+  if (!(z >= tolerance.min_depth_m && z <= tolerance.max_depth_m)) return Visibility::kNoVote;
+  const Eigen::Vector2d ideal = camera_->Project(p.cast<double>());
+  // Far outside the image the distortion polynomial may fold a point back into it.
+  const double beyond_px = -0.25 * std::max(camera_->width(), camera_->height());
+  if (!camera_->InImage(ideal, beyond_px)) return Visibility::kNoVote;
+  const Eigen::Vector2d uv = camera_->Distort(ideal);
+  if (!camera_->InImage(uv)) return Visibility::kNoVote;
+  const int bu = static_cast<int>(uv.x()) / block_px_;
+  const int bv = static_cast<int>(uv.y()) / block_px_;
+  if (bu < 0 || bv < 0 || bu >= near_m_.cols || bv >= near_m_.rows) return Visibility::kNoVote;
+  const float near = near_m_.at<float>(bv, bu);
+  if (std::isinf(near)) return Visibility::kNoVote;
+  const double margin = tolerance.margin_m + tolerance.margin_ratio * z;
+  if (near > z + margin) return Visibility::kSeeThrough;
+  if (near >= z - margin) return Visibility::kSupport;
+  return Visibility::kNoVote;  // something nearer occludes the point
+}
+
+}  // namespace dslam

@@ -1,0 +1,161 @@
+#include "dslam/mapping/static_mapper.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <utility>
+
+#include "dslam/mapping/coloured_cloud.h"
+
+namespace dslam {
+namespace {
+
+const Config& Validated(const Config& config) {
+  config.Validate();
+  return config;
+}
+
+ColouredPoint Transformed(const Eigen::Isometry3f& T, const ColouredPoint& point) {
+  ColouredPoint out = point;
+  out.p = T * point.p;
+  return out;
+}
+
+}  // namespace
+
+StaticMapper::StaticMapper(const Config& config)
+    : config_(Validated(config).map),
+      mask_config_(config.dynamic_mask),
+      tolerance_(FreeSpaceTolerance::From(config.map, config.depth_noise.min_depth_m)),
+      min_depth_m_(config.depth_noise.min_depth_m),
+      voxels_(config.map.voxel_size_m) {}
+
+StaticMapper::WindowKeyFrame StaticMapper::Prepare(const KeyFrameRecord& keyframe) const {
+  BackProjection options;
+  options.pixel_step = config_.pixel_step;
+  options.min_depth_m = min_depth_m_;
+  options.max_depth_m = config_.max_depth_m;
+  options.voxel_size_m = config_.voxel_size_m;
+  const cv::Mat mask = config_.dynamic_masks ? DynamicPixelMask(keyframe, mask_config_) : cv::Mat();
+  return WindowKeyFrame{
+      keyframe.id, keyframe.T_world_camera, BackProjectKeyFrame(keyframe.frame, mask, options),
+      DepthView(keyframe.frame, keyframe.T_world_camera, config_.pixel_step, min_depth_m_)};
+}
+
+void StaticMapper::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
+                               const std::vector<KeyFramePose>& window) {
+  std::vector<WindowKeyFrame> prepared;  // the expensive part, without the lock
+  for (const KeyFrameRecord& keyframe : added) prepared.push_back(Prepare(keyframe));
+  std::unordered_map<int, Eigen::Isometry3d> poses;
+  for (const KeyFramePose& pose : window) poses.emplace(pose.id, pose.T_world_camera);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (WindowKeyFrame& keyframe : prepared) window_.push_back(std::move(keyframe));
+  std::deque<WindowKeyFrame> kept;
+  for (WindowKeyFrame& keyframe : window_) {
+    const auto pose = poses.find(keyframe.id);
+    if (pose == poses.end()) {  // left Slam's window: its pose is final
+      FuseForGood(std::move(keyframe));
+      continue;
+    }
+    keyframe.T_world_camera = pose->second;
+    kept.push_back(std::move(keyframe));
+  }
+  window_ = std::move(kept);
+  ++revision_;
+}
+
+void StaticMapper::OnReset(ResetMode mode) {
+  if (mode == ResetMode::kKeepPose) {  // the world frame goes on: the window is final
+    FuseWindow();
+    return;
+  }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  voxels_.Clear();
+  window_.clear();
+  views_.clear();
+  stats_ = StaticMapStats();
+  ++revision_;
+}
+
+void StaticMapper::FuseWindow() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  while (!window_.empty()) {
+    WindowKeyFrame keyframe = std::move(window_.front());
+    window_.pop_front();
+    FuseForGood(std::move(keyframe));
+  }
+  ++revision_;
+}
+
+void StaticMapper::FuseForGood(WindowKeyFrame keyframe) {
+  keyframe.view.set_pose(keyframe.T_world_camera);
+  ColouredCloud points;
+  if (config_.free_space_check) {
+    // Only voxels hit within the last free_space_keyframes keyframes: drift between keyframes
+    // far apart in time would make static surfaces look seen through.
+    stats_.carved_voxels +=
+        voxels_.Carve(keyframe.view, tolerance_, keyframe.id - config_.free_space_keyframes);
+    points = CheckedPoints(keyframe);
+    stats_.transient_points += keyframe.points_camera.size() - points.size();
+  } else {
+    const Eigen::Isometry3f T = keyframe.T_world_camera.cast<float>();
+    for (const ColouredPoint& point : keyframe.points_camera) {
+      points.push_back(Transformed(T, point));
+    }
+  }
+  for (const ColouredPoint& point : points) voxels_.Add(point, keyframe.id);
+  const Eigen::Vector3f centre = keyframe.T_world_camera.translation().cast<float>();
+  stats_.cropped_voxels += voxels_.Crop(centre, config_.extent_m);
+  ++stats_.fused_keyframes;
+  if (config_.free_space_check) {
+    views_.push_back(std::move(keyframe.view));
+    while (static_cast<int>(views_.size()) > config_.free_space_keyframes) views_.pop_front();
+  }
+}
+
+ColouredCloud StaticMapper::CheckedPoints(const WindowKeyFrame& keyframe) {
+  const Eigen::Isometry3f T = keyframe.T_world_camera.cast<float>();
+  ColouredCloud kept;
+  kept.reserve(keyframe.points_camera.size());
+  for (const ColouredPoint& point : keyframe.points_camera) {
+    const ColouredPoint world = Transformed(T, point);
+    int hits = 1, misses = 0;  // its own keyframe saw it
+    for (const DepthView& view : views_) {
+      const Visibility vote = view.Vote(world.p, tolerance_);
+      hits += vote == Visibility::kSupport;
+      misses += vote == Visibility::kSeeThrough;
+    }
+    if (!tolerance_.Transient(misses, hits)) kept.push_back(world);
+  }
+  return kept;
+}
+
+ColouredCloud StaticMapper::Cloud() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  ColouredCloud cloud = voxels_.Points();
+  VoxelMap pending(config_.voxel_size_m);  // window points where the fused map has none
+  for (const WindowKeyFrame& keyframe : window_) {
+    const Eigen::Isometry3f T = keyframe.T_world_camera.cast<float>();
+    for (const ColouredPoint& point : keyframe.points_camera) {
+      const ColouredPoint world = Transformed(T, point);
+      if (!voxels_.Contains(voxels_.KeyOf(world.p))) pending.Add(world, keyframe.id);
+    }
+  }
+  const ColouredCloud window_points = pending.Points();
+  cloud.insert(cloud.end(), window_points.begin(), window_points.end());
+  return cloud;
+}
+
+StaticMapStats StaticMapper::stats() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  StaticMapStats stats = stats_;
+  stats.voxels = voxels_.size();
+  stats.window_keyframes = static_cast<int>(window_.size());
+  return stats;
+}
+
+uint64_t StaticMapper::revision() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return revision_;
+}
+
+}  // namespace dslam

@@ -1,0 +1,81 @@
+#include "dslam/ros/static_map_publisher.h"
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <sensor_msgs/PointCloud2.h>
+
+namespace dslam {
+namespace ros_layer {
+namespace {
+
+// `cloud` [m, world frame] in the frame T_frame_world maps it to, as a PointCloud2.
+sensor_msgs::PointCloud2 ToMessage(const ColouredCloud& cloud,
+                                   const Eigen::Isometry3d& T_frame_world) {
+  const Eigen::Isometry3f T = T_frame_world.cast<float>();
+  pcl::PointCloud<pcl::PointXYZRGB> points;
+  points.reserve(cloud.size());
+  for (const ColouredPoint& point : cloud) {
+    pcl::PointXYZRGB q(point.r, point.g, point.b);
+    q.getVector3fMap() = T * point.p;
+    points.push_back(q);
+  }
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(points, message);
+  return message;
+}
+
+}  // namespace
+
+StaticMapPublisher::StaticMapPublisher(ros::NodeHandle& nh, const NodeConfig& config,
+                                       std::shared_ptr<const StaticMapper> mapper)
+    : odom_frame_(config.odom_frame), mapper_(std::move(mapper)) {
+  map_pub_ = nh.advertise<sensor_msgs::PointCloud2>("static_map", 1, /*latch=*/true);
+  save_srv_ = nh.advertiseService("save_map", &StaticMapPublisher::OnSave, this);
+  timer_ = nh.createWallTimer(ros::WallDuration(1.0 / config.static_map_rate_hz),
+                              [this](const ros::WallTimerEvent&) { OnTimer(); });
+}
+
+StaticMapPublisher::~StaticMapPublisher() {
+  timer_.stop();
+  save_srv_.shutdown();
+}
+
+void StaticMapPublisher::SetMount(const Eigen::Isometry3d& T_base_camera) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  T_base_camera_ = T_base_camera;
+}
+
+void StaticMapPublisher::OnTimer() {
+  if (map_pub_.getNumSubscribers() == 0) return;
+  Eigen::Isometry3d T_odom_world;
+  const uint64_t revision = mapper_->revision();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!T_base_camera_ || published_revision_ == revision) return;
+    T_odom_world = *T_base_camera_;
+    published_revision_ = revision;
+  }
+  // The cloud is built outside this class's lock (Cloud takes the mapper's).
+  sensor_msgs::PointCloud2 message = ToMessage(mapper_->Cloud(), T_odom_world);
+  message.header.stamp = ros::Time::now();
+  message.header.frame_id = odom_frame_;
+  map_pub_.publish(message);
+}
+
+bool StaticMapPublisher::OnSave(dslam::SaveMap::Request& req, dslam::SaveMap::Response& res) {
+  try {
+    const ColouredCloud cloud = mapper_->Cloud();
+    WritePcd(req.path, cloud);
+    res.points = static_cast<int>(cloud.size());
+    res.success = true;
+    res.message = "wrote " + std::to_string(res.points) + " points to " + req.path;
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+  }
+  return true;
+}
+
+}  // namespace ros_layer
+}  // namespace dslam

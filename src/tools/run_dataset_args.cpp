@@ -1,0 +1,71 @@
+#include "run_dataset_args.h"
+
+#include <iostream>
+
+namespace dslam {
+namespace tools {
+
+int Usage() {
+  std::cerr << "usage: dslam_run_dataset --dataset FOLDER --trajectory OUT.txt [--camera "
+               "camera.yaml]\n"
+               "                         [--status OUT.csv] [--static-points on|off] "
+               "[--backend on|off] [--config params.yaml]\n"
+               "                         [--summary OUT.json] [--segmentation OUT.csv] "
+               "[--max-frames N] [--quiet]\n"
+               "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
+               "                         [--objects OUT.txt] [--map OUT.pcd] "
+               "[--map-unmasked OUT.pcd]\n";
+  return 2;
+}
+
+bool Parse(int argc, char** argv, RunDatasetArgs* args) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string key = argv[i];
+    if (key == "--quiet") {
+      args->quiet = true;
+      continue;
+    }
+    if (key == "--threads") {
+      args->threads = true;
+      continue;
+    }
+    if (i + 1 >= argc) return false;
+    const std::string value = argv[++i];
+    if (key == "--dataset")
+      args->dataset = value;
+    else if (key == "--camera")
+      args->camera = value;
+    else if (key == "--trajectory")
+      args->trajectory = value;
+    else if (key == "--objects")
+      args->objects = value;
+    else if (key == "--map")
+      args->map = value;
+    else if (key == "--map-unmasked")
+      args->map_unmasked = value;
+    else if (key == "--refined-trajectory")
+      args->refined_trajectory = value;
+    else if (key == "--status")
+      args->status = value;
+    else if (key == "--config")
+      args->config = value;
+    else if (key == "--summary")
+      args->summary = value;
+    else if (key == "--segmentation")
+      args->segmentation = value;
+    else if (key == "--max-frames")
+      args->max_frames = std::stoi(value);
+    else if (key == "--rate" && std::stod(value) > 0.0)
+      args->rate_hz = std::stod(value);
+    else if (key == "--static-points" && (value == "on" || value == "off"))
+      args->static_points = value;
+    else if (key == "--backend" && (value == "on" || value == "off"))
+      args->backend = value;
+    else
+      return false;
+  }
+  return !args->dataset.empty() && !args->trajectory.empty();
+}
+
+}  // namespace tools
+}  // namespace dslam

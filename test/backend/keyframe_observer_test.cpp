@@ -1,0 +1,170 @@
+// Slam's keyframe observers (keyframe_observer.h): every keyframe in order with shared images and
+// its labels, the window's poses, resets in order with the keyframes, the same in both modes, and
+// the calls never overlapping and never on the tracking thread when threaded. Also run under
+// ThreadSanitizer by scripts/sanitize.sh (binary test_slam_threads).
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "dslam/backend/slam.h"
+#include "support/rendered_sequence.h"
+
+namespace dslam {
+namespace {
+
+constexpr int kFrames = 40;
+
+const test::RenderedSequence& Sequence() {
+  static const test::RenderedSequence rendered = test::RenderSequence("static_room", kFrames);
+  return rendered;
+}
+
+// Records what Slam hands over: "k<id>" per keyframe, "r0"/"r1" per reset (kKeepPose/kNewWorld).
+class Recorder : public KeyFrameObserver {
+ public:
+  void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
+                   const std::vector<KeyFramePose>& window) override {
+    Enter();
+    for (const KeyFrameRecord& keyframe : added) {
+      events.push_back("k" + std::to_string(keyframe.id));
+      records.push_back(keyframe);
+    }
+    last_window = window;
+    Leave();
+  }
+  void OnReset(ResetMode mode) override {
+    Enter();
+    events.push_back(mode == ResetMode::kNewWorld ? "r1" : "r0");
+    Leave();
+  }
+
+  std::vector<std::string> events;
+  std::vector<KeyFrameRecord> records;
+  std::vector<KeyFramePose> last_window;
+  std::vector<std::thread::id> threads;  ///< the thread of each call
+  bool overlapped = false;
+
+ private:
+  void Enter() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    overlapped |= inside_;
+    inside_ = true;
+    threads.push_back(std::this_thread::get_id());
+  }
+  void Leave() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    inside_ = false;
+  }
+  std::mutex mutex_;
+  bool inside_ = false;
+};
+
+struct Fed {
+  std::vector<std::string> keyframes;  ///< "k<id>" of every FrameResult with keyframe set
+  std::vector<FrameResult> results;
+};
+
+// Frames [begin, end) through `slam`, each with `request`.
+void Feed(Slam* slam, int begin, int end, const FrameRequest& request, Fed* run) {
+  for (int i = begin; i < end; ++i) {
+    const FrameResult r = slam->ProcessFrame(Sequence().frames[i], request);
+    if (r.keyframe) {
+      run->keyframes.push_back("k" + std::to_string(slam->MapSnapshot().keyframes().back().id));
+    }
+    run->results.push_back(r);
+  }
+}
+
+Config WithBackEnd(bool on) {
+  Config config;
+  config.backend.enabled = on;
+  config.backend.ba_fixed_keyframes = 1;
+  return config;
+}
+
+TEST(KeyFrameObserver, ReceivesEveryKeyFrameWithSharedImagesAndLabels) {
+  auto recorder = std::make_shared<Recorder>();
+  Slam slam(WithBackEnd(true), BackEndMode::kSynchronous, RefinedPoseRecording::kOn, {recorder});
+  Fed run;
+  Feed(&slam, 0, kFrames, FrameRequest{true, false}, &run);
+  ASSERT_GE(run.keyframes.size(), 4u);
+  EXPECT_EQ(recorder->events, run.keyframes);
+  EXPECT_FALSE(recorder->overlapped);
+  for (const std::thread::id id : recorder->threads) EXPECT_EQ(id, std::this_thread::get_id());
+  size_t k = 0;
+  for (size_t i = 0; i < run.results.size(); ++i) {
+    if (!run.results[i].keyframe) continue;
+    const KeyFrameRecord& record = recorder->records[k++];
+    // A shallow copy: the very pixels of the frame handed in.
+    EXPECT_EQ(record.frame.depth_m.data, Sequence().frames[i].depth_m.data);
+    EXPECT_EQ(record.frame.colour.data, Sequence().frames[i].colour.data);
+    EXPECT_TRUE(record.T_world_camera.isApprox(run.results[i].T_world_camera));
+    EXPECT_EQ(record.points.size(), run.results[i].points.size());
+  }
+  // The window's poses as the back end left them.
+  const Map map = slam.MapSnapshot();
+  ASSERT_EQ(recorder->last_window.size(), map.keyframes().size());
+  for (size_t i = 0; i < map.keyframes().size(); ++i) {
+    EXPECT_EQ(recorder->last_window[i].id, map.keyframes()[i].id);
+    EXPECT_TRUE(
+        recorder->last_window[i].T_world_camera.isApprox(map.keyframes()[i].T_world_camera));
+  }
+}
+
+TEST(KeyFrameObserver, LabelsArriveWhenTheCallerAsksForNoPoints) {
+  auto recorder = std::make_shared<Recorder>();
+  Slam slam(WithBackEnd(false), BackEndMode::kSynchronous, RefinedPoseRecording::kOn, {recorder});
+  Fed run;
+  Feed(&slam, 0, kFrames, FrameRequest{false, false}, &run);
+  for (const FrameResult& r : run.results) EXPECT_TRUE(r.points.empty());
+  size_t labelled = 0;  // keyframes after the first have matched points
+  for (const KeyFrameRecord& record : recorder->records) labelled += !record.points.empty();
+  EXPECT_EQ(labelled + 1, recorder->records.size());
+}
+
+TEST(KeyFrameObserver, ThreadedDeliversTheSameOnTheBackEndThread) {
+  for (const bool backend : {true, false}) {
+    auto recorder = std::make_shared<Recorder>();
+    Slam slam(WithBackEnd(backend), BackEndMode::kThreaded, RefinedPoseRecording::kOn, {recorder});
+    Fed run;
+    Feed(&slam, 0, kFrames, FrameRequest{}, &run);
+    slam.WaitForBackEnd();
+    EXPECT_EQ(recorder->events, run.keyframes) << "back end " << backend;
+    EXPECT_FALSE(recorder->overlapped);
+    for (const std::thread::id id : recorder->threads) EXPECT_NE(id, std::this_thread::get_id());
+    EXPECT_EQ(recorder->last_window.size(), slam.MapSnapshot().keyframes().size());
+  }
+}
+
+TEST(KeyFrameObserver, ResetsArriveInOrderWithTheKeyFrames) {
+  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
+    auto first = std::make_shared<Recorder>(), second = std::make_shared<Recorder>();
+    Slam slam(WithBackEnd(true), mode, RefinedPoseRecording::kOn, {first, second});
+    slam.HoldBackEnd(true);  // threaded: everything queues, then one delivery in order
+    Fed run;
+    Feed(&slam, 0, 15, FrameRequest{}, &run);
+    std::vector<std::string> expected = run.keyframes;
+    slam.Reset(ResetMode::kKeepPose);
+    expected.push_back("r0");
+    run.keyframes.clear();
+    Feed(&slam, 15, 25, FrameRequest{}, &run);
+    expected.insert(expected.end(), run.keyframes.begin(), run.keyframes.end());
+    // Time going backwards: a new world before the keyframe of the frame that found it.
+    run.keyframes.clear();
+    Feed(&slam, 0, 5, FrameRequest{}, &run);
+    ASSERT_TRUE(run.results[run.results.size() - 5].reset);
+    expected.push_back("r1");
+    expected.insert(expected.end(), run.keyframes.begin(), run.keyframes.end());
+    slam.Reset(ResetMode::kNewWorld);
+    expected.push_back("r1");
+    slam.WaitForBackEnd();
+    EXPECT_EQ(first->events, expected);
+    EXPECT_EQ(second->events, expected);
+  }
+}
+
+}  // namespace
+}  // namespace dslam
