@@ -12,6 +12,7 @@ brought up to date with scripts/setup.sh unless --no-build. Synthetic sequences 
 by the current dslam_synth into build/speed_bench/cache. Usage:
   scripts/speed_benchmark.py [--reference-commit cdfc860] [--rounds 2]
       [--sequences bonn_crowd_frames300-599,walking,static_room] [--out build/speed_bench/runs]
+      [--mapping]
 """
 import argparse
 import csv
@@ -152,14 +153,21 @@ def ate_m(eval_bin, folder, trajectory, json_path):
         return json.load(handle)["ate_rmse_m"]
 
 
+MAPPING = False  # --mapping: the current runs also write the static map and the moving objects
+
+
 def run_once(program, bin_dir, folder, stem, eval_bin):
     """One dslam_run_dataset run of `program` ("current" or "reference") on `folder`, outputs
-    under the path prefix `stem`; returns its numbers."""
+    under the path prefix `stem`; returns its numbers. With --mapping the current run's tracking
+    time is median_tracking_ms + median_objects_ms: the moving objects run on the tracking thread
+    after each frame, the static map on the back-end thread."""
     cmd = [os.path.join(bin_dir, "dslam_run_dataset"), "--dataset", folder, "--camera",
            os.path.join(folder, "camera.yaml"), "--trajectory", stem + ".txt", "--summary",
            stem + ".json", "--status", stem + ".csv", "--quiet"]
     if program == "current":
         cmd += CURRENT_ARGS
+        if MAPPING:
+            cmd += ["--map", stem + "_map.pcd", "--objects", stem + "_objects.txt"]
     code, peak_mib, wall_s = speed_report.run_measured(cmd, stem + ".log")
     if code != 0:
         sys.exit(f"failed ({code}): {' '.join(cmd)}; see {stem}.log")
@@ -168,6 +176,8 @@ def run_once(program, bin_dir, folder, stem, eval_bin):
     if program == "current":
         with open(stem + ".csv") as handle:
             metrics = speed_report.current_metrics(summary, list(csv.DictReader(handle)), RATE_HZ)
+        if MAPPING:
+            metrics["tracking_ms"] += summary["median_objects_ms"]
     else:
         metrics = speed_report.reference_metrics(summary)
     metrics.update(peak_rss_mib=peak_mib, wall_s=wall_s,
@@ -197,6 +207,9 @@ def parse_args():
     parser.add_argument("--sequences", default="bonn_crowd_frames300-599,walking,static_room",
                         help="folders of ../shared/data or synthetic scenarios, comma-separated")
     parser.add_argument("--out", default=os.path.join(REPO, "build", "speed_bench", "runs"))
+    parser.add_argument("--mapping", action="store_true",
+                        help="current runs with --map and --objects (tracking time includes the "
+                             "objects' median)")
     parser.add_argument("--no-build", action="store_true",
                         help="use build/ws as it is (no scripts/setup.sh)")
     return parser.parse_args()
@@ -228,7 +241,9 @@ def per_round_lines(name, per_round):
 
 
 def main():
+    global MAPPING
     args = parse_args()
+    MAPPING = args.mapping
     started, load_start = time.monotonic(), load()
     current_commit = git("rev-parse", "HEAD")
     dirty = " (with uncommitted changes)" if git("status", "--porcelain", "--untracked-files=no") \
@@ -251,7 +266,9 @@ def main():
     label = args.reference_commit
     report = "\n".join([
         f"current {current_commit}{dirty} vs reference {label} ({ref_full}); "
-        f"current: dslam_run_dataset {' '.join(CURRENT_ARGS)}; reference: as fast as it runs",
+        f"current: dslam_run_dataset {' '.join(CURRENT_ARGS)}"
+        f"{' --map M --objects O (tracking = median tracking + median objects ms)' if MAPPING else ''}"
+        "; reference: as fast as it runs",
         f"machine: {machine()}; load average (1/5/15 min): {load_start} at start, "
         f"{load_before} before the runs, {load()} after the runs",
         f"rounds: {args.rounds} (A B per sequence and round; medians over rounds, max backlog "

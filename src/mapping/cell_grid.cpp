@@ -4,9 +4,50 @@
 #include <cmath>
 
 namespace dslam {
+namespace {
+
+/// The unit-depth rays (x/z, y/z) of the cell centres of `camera` at `decimation`, undistorted
+/// once per camera and decimation on each thread (the last ones are kept: a node or a dataset
+/// has one camera, and Undistort iterates per pixel).
+const std::vector<Eigen::Vector2d>& CellRays(const PinholeCamera& camera, int decimation) {
+  struct Cache {
+    std::vector<double> key;
+    std::vector<Eigen::Vector2d> rays;
+  };
+  thread_local Cache cache;
+  const Distortion& d = camera.distortion();
+  const std::vector<double> key = {static_cast<double>(camera.width()),
+                                   static_cast<double>(camera.height()),
+                                   camera.fx(),
+                                   camera.fy(),
+                                   camera.cx(),
+                                   camera.cy(),
+                                   d.k1,
+                                   d.k2,
+                                   d.p1,
+                                   d.p2,
+                                   d.k3,
+                                   static_cast<double>(decimation)};
+  if (cache.key == key) return cache.rays;
+  const int rows = camera.height() / decimation, cols = camera.width() / decimation;
+  const int half = decimation / 2;
+  cache.rays.resize(static_cast<size_t>(rows) * cols);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const Eigen::Vector2d uv_raw(c * decimation + half, r * decimation + half);
+      const Eigen::Vector2d uv = d.IsZero() ? uv_raw : camera.Undistort(uv_raw);
+      cache.rays[r * cols + c] = camera.BackProject(uv, 1.0).head<2>();
+    }
+  }
+  cache.key = key;
+  return cache.rays;
+}
+
+}  // namespace
 
 CellGrid::CellGrid(const RgbdFrame& frame, const DynamicMaskConfig& config)
     : frame_(frame),
+      rays_(CellRays(*frame.camera, config.decimation)),
       decimation_(config.decimation),
       rows_(frame.depth_m.rows / config.decimation),
       cols_(frame.depth_m.cols / config.decimation),
@@ -43,10 +84,8 @@ Eigen::Vector3d CellGrid::BackProjectPixel(const Eigen::Vector2d& uv_raw, double
 
 const Eigen::Vector3d& CellGrid::CellPoint(int cell) const {
   if (!has_point_[cell]) {
-    const int half = decimation_ / 2;
-    const Eigen::Vector2d uv((cell % cols_) * decimation_ + half,
-                             (cell / cols_) * decimation_ + half);
-    points_[cell] = BackProjectPixel(uv, depth_[cell]);
+    const double z = depth_[cell];
+    points_[cell] = Eigen::Vector3d(rays_[cell].x() * z, rays_[cell].y() * z, z);
     has_point_[cell] = 1;
   }
   return points_[cell];

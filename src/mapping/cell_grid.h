@@ -43,6 +43,7 @@ class CellGrid {
 
  private:
   const RgbdFrame& frame_;
+  const std::vector<Eigen::Vector2d>& rays_;  ///< per cell: centre pixel's ray at unit depth
   int decimation_, rows_, cols_;
   double step_m_, step_ratio_, max_depth_m_;
   std::vector<double> depth_;
