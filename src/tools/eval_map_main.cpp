@@ -3,9 +3,6 @@
 // dslam/eval/map_metrics.h: ghost share, static coverage, static share.
 //   dslam_eval_map --dataset FOLDER --map MAP.pcd [--trajectory EST_TRAJ.txt] [--json OUT.json]
 //                  [--radius M] [--voxel M] [--pixel-stride N] [--frame-stride N]
-#include <pcl/io/pcd_io.h>
-#include <pcl/point_types.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +17,8 @@
 #include "dslam/eval/trajectory_metrics.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "dslam/mapping/coloured_cloud.h"
+#include "eval_tool.h"
 
 namespace {
 
@@ -37,60 +36,13 @@ constexpr char kUsage[] =
     "  --pixel-stride  every N-th pixel and row of the noise-free depth (default 2)\n"
     "  --frame-stride  every N-th frame (default 1)\n";
 
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-std::map<std::string, std::string> ParseArguments(int argc, char** argv) {
-  static const std::vector<std::string> kKnown = {
-      "dataset", "map", "trajectory", "json", "radius", "voxel", "pixel-stride", "frame-stride"};
-  std::map<std::string, std::string> values;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") return {{"help", ""}};
-    const std::string name = arg.rfind("--", 0) == 0 ? arg.substr(2) : "";
-    if (std::find(kKnown.begin(), kKnown.end(), name) == kKnown.end()) {
-      throw UsageError("unknown argument '" + arg + "'");
-    }
-    if (i + 1 >= argc) throw UsageError("missing value after " + arg);
-    values[name] = argv[++i];
-  }
-  for (const char* required : {"dataset", "map"}) {
-    if (!values.count(required)) throw UsageError(std::string("--") + required + " is required");
-  }
-  return values;
-}
-
-/// The option's value as a positive finite number (`whole`: a whole number), else UsageError.
-double Positive(const std::map<std::string, std::string>& values, const std::string& name,
-                double fallback, bool whole) {
-  const auto it = values.find(name);
-  if (it == values.end()) return fallback;
-  size_t used = 0;
-  double value = -1.0;
-  try {
-    value = std::stod(it->second, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != it->second.size() || !(value > 0.0) || !std::isfinite(value) ||
-      (whole && (value != std::floor(value) || value > 1e6))) {
-    throw UsageError("--" + name + " needs a positive " + (whole ? "whole " : "") +
-                     "number, got '" + it->second + "'");
-  }
-  return value;
-}
-
 /// The map's points moved into the world by T_world_map.
 std::vector<Eigen::Vector3d> LoadMap(const std::string& path,
                                      const Eigen::Isometry3d& T_world_map) {
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  if (pcl::io::loadPCDFile(path, cloud) != 0) throw std::runtime_error("cannot read PCD " + path);
+  const dslam::ColouredCloud cloud = dslam::ReadPcd(path);
   std::vector<Eigen::Vector3d> points;
   points.reserve(cloud.size());
-  for (const pcl::PointXYZ& p : cloud)
-    points.push_back(T_world_map * Eigen::Vector3d(p.x, p.y, p.z));
+  for (const dslam::ColouredPoint& p : cloud) points.push_back(T_world_map * p.p.cast<double>());
   return points;
 }
 
@@ -117,7 +69,7 @@ void PrintTable(const dslam::MapMetrics& m, const dslam::MapMetricsOptions& o, i
 }
 
 dslam::JsonObject MetricsJson(const dslam::MapMetrics& m, const dslam::MapMetricsOptions& o,
-                              int frames, const std::map<std::string, std::string>& values) {
+                              int frames, const dslam::tools::Options& values) {
   constexpr int kDigits = 9;
   dslam::JsonObject json;
   json.AddString("dataset", values.at("dataset"))
@@ -139,28 +91,20 @@ dslam::JsonObject MetricsJson(const dslam::MapMetrics& m, const dslam::MapMetric
   return json;
 }
 
-int Run(const std::map<std::string, std::string>& values) {
+int Run(const dslam::tools::Options& values) {
+  using dslam::tools::NumberKind;
+  using dslam::tools::NumberOption;
   dslam::MapMetricsOptions options;
-  options.radius_m = Positive(values, "radius", options.radius_m, false);
-  options.voxel_m = Positive(values, "voxel", options.voxel_m, false);
-  options.pixel_stride =
-      static_cast<int>(Positive(values, "pixel-stride", options.pixel_stride, true));
-  options.frame_stride =
-      static_cast<int>(Positive(values, "frame-stride", options.frame_stride, true));
+  options.radius_m = NumberOption(values, "radius", options.radius_m, NumberKind::kPositive);
+  options.voxel_m = NumberOption(values, "voxel", options.voxel_m, NumberKind::kPositive);
+  options.pixel_stride = static_cast<int>(
+      NumberOption(values, "pixel-stride", options.pixel_stride, NumberKind::kPositiveWhole));
+  options.frame_stride = static_cast<int>(
+      NumberOption(values, "frame-stride", options.frame_stride, NumberKind::kPositiveWhole));
   const std::string folder = values.at("dataset");
-  const dslam::Trajectory groundtruth = dslam::ReadTumTrajectory(folder + "/groundtruth.txt");
-  const std::vector<dslam::StampedFile> frames = dslam::ReadFileList(folder + "/rgb.txt");
-  if (groundtruth.empty() || frames.empty()) {
-    throw std::runtime_error(folder + ": groundtruth.txt or rgb.txt is empty");
-  }
-  double first_stamp = frames.front().stamp_s;
-  for (const dslam::StampedFile& f : frames) first_stamp = std::min(first_stamp, f.stamp_s);
-  const dslam::Trajectory estimated = values.count("trajectory")
-                                          ? dslam::ReadTumTrajectory(values.at("trajectory"))
-                                          : dslam::Trajectory();
   constexpr double kMaxDt_s = 0.005;
   const Eigen::Isometry3d T_world_map =
-      dslam::EstimateFrameInWorld(groundtruth, first_stamp, estimated, kMaxDt_s);
+      dslam::tools::EstimateWorldFrame(folder, values, kMaxDt_s).T_world_estimate;
   const std::vector<Eigen::Vector3d> map = LoadMap(values.at("map"), T_world_map);
   const dslam::MapReference reference = dslam::LoadMapReference(folder, options);
   const dslam::MapMetrics metrics = dslam::EvaluateMap(map, reference, options.radius_m);
@@ -175,19 +119,8 @@ int Run(const std::map<std::string, std::string>& values) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::map<std::string, std::string> values;
-  try {
-    values = ParseArguments(argc, argv);
-    if (values.count("help")) {
-      std::cout << kUsage;
-      return 0;
-    }
-    return Run(values);
-  } catch (const UsageError& e) {
-    std::cerr << "dslam_eval_map: " << e.what() << " (see --help)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "dslam_eval_map: error: " << e.what() << "\n";
-    return 1;
-  }
+  return dslam::tools::RunTool(
+      "dslam_eval_map", kUsage, argc, argv,
+      {"dataset", "map", "trajectory", "json", "radius", "voxel", "pixel-stride", "frame-stride"},
+      {"dataset", "map"}, Run);
 }

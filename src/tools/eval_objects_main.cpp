@@ -16,6 +16,7 @@
 #include "dslam/eval/trajectory_metrics.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "eval_tool.h"
 
 namespace {
 
@@ -30,48 +31,6 @@ constexpr char kUsage[] =
     "  --gate        largest centroid distance of a match [m] (default 0.5)\n"
     "  --max-range   truth objects farther from the camera are not evaluated [m] (default 4)\n"
     "  --min-share   truth objects covering less of the image are not evaluated (default 0.02)\n";
-
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-std::map<std::string, std::string> ParseArguments(int argc, char** argv) {
-  static const std::vector<std::string> kKnown = {"dataset", "objects",   "trajectory", "json",
-                                                  "gate",    "max-range", "min-share"};
-  std::map<std::string, std::string> values;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") return {{"help", ""}};
-    const std::string name = arg.rfind("--", 0) == 0 ? arg.substr(2) : "";
-    if (std::find(kKnown.begin(), kKnown.end(), name) == kKnown.end()) {
-      throw UsageError("unknown argument '" + arg + "'");
-    }
-    if (i + 1 >= argc) throw UsageError("missing value after " + arg);
-    values[name] = argv[++i];
-  }
-  for (const char* required : {"dataset", "objects"}) {
-    if (!values.count(required)) throw UsageError(std::string("--") + required + " is required");
-  }
-  return values;
-}
-
-double Number(const std::map<std::string, std::string>& values, const std::string& name,
-              double fallback) {
-  const auto it = values.find(name);
-  if (it == values.end()) return fallback;
-  size_t used = 0;
-  double value = -1.0;
-  try {
-    value = std::stod(it->second, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != it->second.size() || !(value >= 0.0) || !std::isfinite(value)) {
-    throw UsageError("--" + name + " needs a number >= 0, got '" + it->second + "'");
-  }
-  return value;
-}
 
 std::string Fixed(double value, int decimals) {
   if (std::isnan(value)) return "n/a";
@@ -103,7 +62,7 @@ void PrintTable(const dslam::ObjectMetrics& m, const dslam::ObjectMetricsOptions
 }
 
 dslam::JsonObject MetricsJson(const dslam::ObjectMetrics& m, const dslam::ObjectMetricsOptions& o,
-                              const std::map<std::string, std::string>& values) {
+                              const dslam::tools::Options& values) {
   constexpr int kDigits = 9;
   dslam::JsonObject json;
   json.AddString("dataset", values.at("dataset"))
@@ -128,28 +87,20 @@ dslam::JsonObject MetricsJson(const dslam::ObjectMetrics& m, const dslam::Object
   return json;
 }
 
-/// [s] Stamp of the dataset's first frame: the smallest stamp of rgb.txt.
-double FirstFrameStamp(const std::string& folder) {
-  const std::vector<dslam::StampedFile> frames = dslam::ReadFileList(folder + "/rgb.txt");
-  if (frames.empty()) throw std::runtime_error(folder + "/rgb.txt lists no frames");
-  double first = frames.front().stamp_s;
-  for (const dslam::StampedFile& f : frames) first = std::min(first, f.stamp_s);
-  return first;
-}
-
-int Run(const std::map<std::string, std::string>& values) {
+int Run(const dslam::tools::Options& values) {
+  using dslam::tools::NumberKind;
+  using dslam::tools::NumberOption;
   dslam::ObjectMetricsOptions options;
-  options.gate_m = Number(values, "gate", options.gate_m);
-  options.max_range_m = Number(values, "max-range", options.max_range_m);
-  options.min_pixel_share = Number(values, "min-share", options.min_pixel_share);
+  options.gate_m = NumberOption(values, "gate", options.gate_m, NumberKind::kNonNegative);
+  options.max_range_m =
+      NumberOption(values, "max-range", options.max_range_m, NumberKind::kNonNegative);
+  options.min_pixel_share =
+      NumberOption(values, "min-share", options.min_pixel_share, NumberKind::kNonNegative);
   const std::string folder = values.at("dataset");
-  const dslam::Trajectory groundtruth = dslam::ReadTumTrajectory(folder + "/groundtruth.txt");
-  if (groundtruth.empty()) throw std::runtime_error("ground truth has no poses");
-  const dslam::Trajectory estimated_trajectory =
-      values.count("trajectory") ? dslam::ReadTumTrajectory(values.at("trajectory"))
-                                 : dslam::Trajectory();
-  const Eigen::Isometry3d T_world_estworld = dslam::EstimateFrameInWorld(
-      groundtruth, FirstFrameStamp(folder), estimated_trajectory, options.max_dt_s);
+  const dslam::tools::WorldFrame world =
+      dslam::tools::EstimateWorldFrame(folder, values, options.max_dt_s);
+  const dslam::Trajectory& groundtruth = world.groundtruth;
+  const Eigen::Isometry3d& T_world_estworld = world.T_world_estimate;
   const dslam::ObjectMetrics metrics = dslam::EvaluateObjects(
       dslam::ReadTruthObjects(folder + "/objects.txt"),
       dslam::ReadEstimatedObjects(values.at("objects")), groundtruth, T_world_estworld, options);
@@ -163,19 +114,8 @@ int Run(const std::map<std::string, std::string>& values) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::map<std::string, std::string> values;
-  try {
-    values = ParseArguments(argc, argv);
-    if (values.count("help")) {
-      std::cout << kUsage;
-      return 0;
-    }
-    return Run(values);
-  } catch (const UsageError& e) {
-    std::cerr << "dslam_eval_objects: " << e.what() << " (see --help)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "dslam_eval_objects: error: " << e.what() << "\n";
-    return 1;
-  }
+  return dslam::tools::RunTool(
+      "dslam_eval_objects", kUsage, argc, argv,
+      {"dataset", "objects", "trajectory", "json", "gate", "max-range", "min-share"},
+      {"dataset", "objects"}, Run);
 }
