@@ -12,24 +12,17 @@ scenario means. Usage:
 """
 import argparse
 import os
-import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark import run  # noqa: E402  (exits with the output of a failed command)
 from dslam_tools import mapping_report  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
 BIN = os.path.join(WS, "devel", "lib", "dslam")
 TRUTH_FILES = ("groundtruth.txt", "objects.txt", "depth_true.txt")
-
-
-def run(cmd):
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if proc.returncode != 0:
-        sys.exit(f"failed: {' '.join(cmd)}\n{proc.stdout}\n{proc.stderr}")
-    return proc.stdout
 
 
 def render(scenario, seed, frames, cache):
