@@ -1,5 +1,6 @@
 #include "dslam/features/features.h"
 
+#include <cmath>
 #include <memory>
 #include <random>
 
@@ -95,6 +96,78 @@ TEST(Features, UndistortionApplied) {
     max_shift = std::max(max_shift, (f.uv_ideal - f.uv_raw).norm());
   }
   EXPECT_GT(max_shift, 10.0);  // corners move by tens of pixels with k1 = 0.2
+}
+
+TEST(Features, IntensityCentroidPointsUpTheGradient) {
+  for (const double angle_deg : {0.0, 30.0, 90.0, 200.0, 315.0}) {
+    const double a = angle_deg * CV_PI / 180.0;
+    cv::Mat ramp(64, 64, CV_8UC1);
+    for (int y = 0; y < ramp.rows; ++y) {
+      for (int x = 0; x < ramp.cols; ++x) {
+        ramp.at<uchar>(y, x) = cv::saturate_cast<uchar>(
+            128.0 + 3.0 * ((x - 32) * std::cos(a) + (y - 32) * std::sin(a)));
+      }
+    }
+    const float centre = IntensityCentroidAngle(ramp, cv::Point2f(32, 32));
+    EXPECT_NEAR(std::remainder(centre - angle_deg, 360.0), 0.0, 1.5) << angle_deg;
+  }
+  // At the border only the disc's inside part counts: on a flat image the centroid then lies
+  // towards the image's inside.
+  const cv::Mat flat(64, 64, CV_8UC1, cv::Scalar(100));
+  EXPECT_NEAR(IntensityCentroidAngle(flat, cv::Point2f(3, 32)), 0.0, 1e-3);
+  EXPECT_NEAR(IntensityCentroidAngle(flat, cv::Point2f(32, 60)), 270.0, 1e-3);
+  EXPECT_THROW(IntensityCentroidAngle(cv::Mat(64, 64, CV_8UC3), cv::Point2f(32, 32)),
+               std::invalid_argument);
+}
+
+TEST(Features, NoTwoKeypointsAdjacentOnALevel) {
+  // Non-maximum suppression acts across grid cell borders too: no two keypoints of one level
+  // are 8-neighbours (a strongly textured frame, so that no cell needs the fallback threshold).
+  const RgbdFrame frame = test::TexturedFrame(test::TestCamera(), 4, 2.0);
+  const FeaturesConfig config;
+  const std::vector<cv::KeyPoint> kps = DetectDistributedKeypoints(frame.colour, config);
+  ASSERT_GT(kps.size(), 900u);
+  double scale = 1.0;
+  std::vector<std::vector<cv::Point>> per_level(config.num_levels);
+  for (const cv::KeyPoint& kp : kps) {
+    scale = std::pow(config.scale_factor, kp.octave);
+    per_level[kp.octave].emplace_back(cvRound(kp.pt.x / scale), cvRound(kp.pt.y / scale));
+  }
+  for (const auto& level : per_level) {
+    for (size_t i = 0; i < level.size(); ++i) {
+      for (size_t j = i + 1; j < level.size(); ++j) {
+        const cv::Point d = level[i] - level[j];
+        EXPECT_FALSE(std::abs(d.x) <= 1 && std::abs(d.y) <= 1) << level[i] << " " << level[j];
+      }
+    }
+  }
+}
+
+TEST(Features, DescriptorsFollowARotatedImage) {
+  // rBRIEF is steered by the orientation: the features of an image turned by 90 degrees carry
+  // nearly the same descriptors as the ones they came from.
+  const RgbdFrame frame = test::TexturedFrame(test::TestCamera(), 5, 2.0);
+  RgbdFrame turned = frame;
+  cv::rotate(frame.colour, turned.colour, cv::ROTATE_90_CLOCKWISE);
+  cv::rotate(frame.depth_m, turned.depth_m, cv::ROTATE_90_CLOCKWISE);
+  turned.camera = std::make_shared<PinholeCamera>(480, 640, 525.0, 525.0, 239.5, 319.5);
+  const FrameFeatures a = ExtractFeatures(frame, FeaturesConfig(), DepthNoiseConfig());
+  const FrameFeatures b = ExtractFeatures(turned, FeaturesConfig(), DepthNoiseConfig());
+  std::vector<int> distances;
+  for (size_t i = 0; i < a.features.size(); ++i) {
+    if (a.features[i].octave != 0) continue;
+    // (x, y) -> (rows - 1 - y, x) under a clockwise quarter turn.
+    const Eigen::Vector2d expected(frame.colour.rows - 1 - a.features[i].uv_raw.y(),
+                                   a.features[i].uv_raw.x());
+    for (size_t j = 0; j < b.features.size(); ++j) {
+      if (b.features[j].octave == 0 && (b.features[j].uv_raw - expected).norm() < 0.5) {
+        distances.push_back(cv::norm(a.descriptors.row(i), b.descriptors.row(j), cv::NORM_HAMMING));
+      }
+    }
+  }
+  ASSERT_GT(distances.size(), 100u);
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  EXPECT_LT(distances[distances.size() / 2], 20);  // random pairs are ~128 of 256 bits apart
 }
 
 TEST(Features, RejectsInvalidFrame) {

@@ -4,11 +4,13 @@
 // Distribution rule: an image pyramid of `num_levels` levels (each `scale_factor` smaller) gets a
 // share of `num_features` proportional to its area (ORB-SLAM2's geometric split, any shortfall
 // carried to the next level). Every level is cut into square cells of `cell_size_px`; FAST runs
-// per cell with `fast_threshold`, and again with `fast_threshold_min` in cells where nothing was
-// found. Cells then hand out keypoints round-robin, strongest (FAST score) first: round k takes
-// the k-th best keypoint of every cell that still has one, until the level's share is reached (the
-// last round prefers the strongest). Orientation (intensity centroid) and rBRIEF descriptors come
-// from cv::ORB on the same pyramid.
+// once over all cells of a level with `fast_threshold` (non-maximum suppression across cell
+// borders), and again with `fast_threshold_min` in each cell where nothing was found. Cells then
+// hand out keypoints round-robin, strongest (FAST score) first: round k takes the k-th best
+// keypoint of every cell that still has one, until the level's share is reached (the last round
+// prefers the strongest). Orientation is the intensity centroid; rBRIEF descriptors come from
+// cv::ORB run on each level of the same pyramid. Levels are processed in parallel (OpenCV's
+// thread pool); the result does not depend on the thread count.
 
 #include <optional>
 #include <vector>
@@ -53,5 +55,11 @@ FrameFeatures ExtractFeatures(const RgbdFrame& frame, const FeaturesConfig& conf
 /// the top of this file; orientation and descriptors not yet computed. Exposed for tests/tools.
 std::vector<cv::KeyPoint> DetectDistributedKeypoints(const cv::Mat& grey,
                                                      const FeaturesConfig& config);
+
+/// ORB orientation [deg, 0-360) at `pt` [px] of a grey (CV_8UC1, else std::invalid_argument)
+/// image: the direction from `pt` to the
+/// intensity centroid of the disc of radius 15 px around it (Rublee et al. 2011); pixels outside
+/// the image are left out. Exposed for tests.
+float IntensityCentroidAngle(const cv::Mat& grey, const cv::Point2f& pt);
 
 }  // namespace dslam

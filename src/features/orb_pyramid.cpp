@@ -1,0 +1,187 @@
+#include "orb_pyramid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include <opencv2/core/utility.hpp>
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace dslam {
+namespace orb {
+namespace {
+
+constexpr int kFastMargin = 3;  // [px] FAST needs a radius-3 circle around each pixel
+
+// Share of num_features per level, proportional to 1/scale (ORB-SLAM2's split).
+std::vector<int> LevelShares(const FeaturesConfig& config) {
+  const double f = 1.0 / config.scale_factor;
+  const int n = config.num_levels;
+  std::vector<int> shares(n);
+  double per_level = config.num_features * (1.0 - f) / (1.0 - std::pow(f, n));
+  int total = 0;
+  for (int l = 0; l + 1 < n; ++l) {
+    shares[l] = static_cast<int>(std::lround(per_level));
+    total += shares[l];
+    per_level *= f;
+  }
+  shares[n - 1] = std::max(0, config.num_features - total);
+  return shares;
+}
+
+bool StrongerFirst(const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; }
+
+// FAST over the cell area [x0, x1) x [y0, y1) of one level at `threshold`, with non-maximum
+// suppression; keypoints in level pixels.
+std::vector<cv::KeyPoint> Fast(const cv::Mat& level, int x0, int y0, int x1, int y1,
+                               int threshold) {
+  const cv::Rect roi(x0 - kFastMargin, y0 - kFastMargin, x1 - x0 + 2 * kFastMargin,
+                     y1 - y0 + 2 * kFastMargin);
+  std::vector<cv::KeyPoint> found;
+  cv::FAST(level(roi), found, threshold, true);
+  for (cv::KeyPoint& kp : found) kp.pt += cv::Point2f(roi.x, roi.y);
+  return found;
+}
+
+// The non-empty grid cells of one level (row-major), each strongest first. FAST runs once over
+// the whole cell area with fast_threshold (one call is several times cheaper than one per cell,
+// and non-maximum suppression then also acts across cell borders); cells left empty are searched
+// again on their own with fast_threshold_min.
+std::vector<std::vector<cv::KeyPoint>> DetectCells(const cv::Mat& level,
+                                                   const FeaturesConfig& config) {
+  const int x0 = kEdgeThreshold, y0 = kEdgeThreshold;
+  const int x1 = level.cols - kEdgeThreshold, y1 = level.rows - kEdgeThreshold;
+  if (x1 - x0 < 2 * kFastMargin || y1 - y0 < 2 * kFastMargin) return {};
+  const int size = config.cell_size_px;
+  const int cols = (x1 - x0 + size - 1) / size, rows = (y1 - y0 + size - 1) / size;
+  std::vector<std::vector<cv::KeyPoint>> grid(static_cast<size_t>(rows) * cols);
+  for (const cv::KeyPoint& kp : Fast(level, x0, y0, x1, y1, config.fast_threshold)) {
+    const int c = (static_cast<int>(kp.pt.x) - x0) / size;
+    const int r = (static_cast<int>(kp.pt.y) - y0) / size;
+    if (c >= 0 && r >= 0 && c < cols && r < rows) grid[r * cols + c].push_back(kp);
+  }
+  std::vector<std::vector<cv::KeyPoint>> cells;
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      std::vector<cv::KeyPoint>& cell = grid[r * cols + c];
+      if (cell.empty() && config.fast_threshold_min != config.fast_threshold) {
+        const int cx = x0 + c * size, cy = y0 + r * size;
+        cell = Fast(level, cx, cy, std::min(cx + size, x1), std::min(cy + size, y1),
+                    config.fast_threshold_min);
+      }
+      if (cell.empty()) continue;
+      std::sort(cell.begin(), cell.end(), StrongerFirst);
+      cells.push_back(std::move(cell));
+    }
+  }
+  return cells;
+}
+
+// Round-robin over cells, strongest first within a round; at most `share` keypoints.
+std::vector<cv::KeyPoint> Distribute(const std::vector<std::vector<cv::KeyPoint>>& cells,
+                                     int share) {
+  std::vector<cv::KeyPoint> kept;
+  std::vector<cv::KeyPoint> candidates;
+  for (size_t round = 0; static_cast<int>(kept.size()) < share; ++round) {
+    candidates.clear();
+    for (const auto& cell : cells) {
+      if (round < cell.size()) candidates.push_back(cell[round]);
+    }
+    if (candidates.empty()) break;
+    std::sort(candidates.begin(), candidates.end(), StrongerFirst);
+    const size_t take = std::min(candidates.size(), static_cast<size_t>(share) - kept.size());
+    kept.insert(kept.end(), candidates.begin(), candidates.begin() + take);
+  }
+  return kept;
+}
+
+// Half width of the orientation disc in row dy (|dy| <= kPatchRadius).
+const std::array<int, 2 * kPatchRadius + 1>& DiscHalfWidths() {
+  static const std::array<int, 2 * kPatchRadius + 1> widths = [] {
+    std::array<int, 2 * kPatchRadius + 1> w{};
+    for (int dy = -kPatchRadius; dy <= kPatchRadius; ++dy) {
+      w[dy + kPatchRadius] = static_cast<int>(std::sqrt(kPatchRadius * kPatchRadius - dy * dy));
+    }
+    return w;
+  }();
+  return widths;
+}
+
+}  // namespace
+
+std::vector<double> LevelScales(const FeaturesConfig& config) {
+  std::vector<double> scales(config.num_levels, 1.0);
+  for (int l = 1; l < config.num_levels; ++l) scales[l] = scales[l - 1] * config.scale_factor;
+  return scales;
+}
+
+std::vector<cv::Mat> BuildPyramid(const cv::Mat& grey, const FeaturesConfig& config) {
+  const std::vector<double> scales = LevelScales(config);
+  std::vector<cv::Mat> levels(config.num_levels);
+  levels[0] = grey;
+  cv::parallel_for_(cv::Range(1, config.num_levels), [&](const cv::Range& range) {
+    for (int l = range.start; l < range.end; ++l) {
+      const cv::Size size(cvRound(grey.cols / scales[l]), cvRound(grey.rows / scales[l]));
+      cv::resize(grey, levels[l], size, 0, 0, cv::INTER_LINEAR_EXACT);
+    }
+  });
+  return levels;
+}
+
+std::vector<std::vector<cv::KeyPoint>> DetectLevelKeypoints(const std::vector<cv::Mat>& levels,
+                                                            const FeaturesConfig& config) {
+  const int num_levels = static_cast<int>(levels.size());
+  std::vector<std::vector<std::vector<cv::KeyPoint>>> cells(num_levels);
+  cv::parallel_for_(cv::Range(0, num_levels), [&](const cv::Range& range) {
+    for (int l = range.start; l < range.end; ++l) cells[l] = DetectCells(levels[l], config);
+  });
+  const std::vector<int> shares = LevelShares(config);
+  std::vector<std::vector<cv::KeyPoint>> kept(num_levels);
+  int carry = 0;  // a level's shortfall goes to the next one
+  for (int l = 0; l < num_levels; ++l) {
+    const int share = shares[l] + carry;
+    kept[l] = Distribute(cells[l], share);
+    carry = share - static_cast<int>(kept[l].size());
+  }
+  cv::parallel_for_(cv::Range(0, num_levels), [&](const cv::Range& range) {
+    for (int l = range.start; l < range.end; ++l) {
+      for (cv::KeyPoint& kp : kept[l]) {
+        kp.octave = l;
+        kp.size = static_cast<float>(2 * kPatchRadius + 1);
+        kp.angle = IntensityCentroidAngle(levels[l], kp.pt);
+      }
+    }
+  });
+  return kept;
+}
+
+}  // namespace orb
+
+float IntensityCentroidAngle(const cv::Mat& level, const cv::Point2f& pt) {
+  if (level.type() != CV_8UC1) throw std::invalid_argument("IntensityCentroidAngle: not CV_8UC1");
+  const int cx = cvRound(pt.x), cy = cvRound(pt.y);
+  const bool inside = cx >= orb::kPatchRadius && cy >= orb::kPatchRadius &&
+                      cx + orb::kPatchRadius < level.cols && cy + orb::kPatchRadius < level.rows;
+  const std::array<int, 2 * orb::kPatchRadius + 1>& half_widths = orb::DiscHalfWidths();
+  long m01 = 0, m10 = 0;  // integer moments: exact
+  for (int dy = -orb::kPatchRadius; dy <= orb::kPatchRadius; ++dy) {
+    const int y = cy + dy;
+    if (!inside && (y < 0 || y >= level.rows)) continue;
+    const int half = half_widths[dy + orb::kPatchRadius];
+    const uchar* row = level.ptr<uchar>(y) + cx;
+    long row_sum = 0;
+    for (int dx = -half; dx <= half; ++dx) {
+      if (!inside && (cx + dx < 0 || cx + dx >= level.cols)) continue;
+      m10 += dx * row[dx];
+      row_sum += row[dx];
+    }
+    m01 += dy * row_sum;
+  }
+  float angle = static_cast<float>(std::atan2(static_cast<double>(m01), static_cast<double>(m10)) *
+                                   180.0 / CV_PI);
+  return angle < 0.0f ? angle + 360.0f : angle;
+}
+
+}  // namespace dslam
