@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/features2d.hpp>
 
 namespace dslam {
@@ -123,13 +124,18 @@ std::vector<int> SearchByProjection(const std::vector<ProjectedPoint>& points,
                                     const ProjectionSearchOptions& options) {
   std::vector<int> match(points.size(), -1);
   std::vector<int> distances(points.size(), 0);
-  const FeatureGrid grid(frame);
-  for (size_t k = 0; k < points.size(); ++k) {
-    if (points[k].descriptor.total() != kDescriptorBytes) {
+  for (const ProjectedPoint& point : points) {
+    if (point.descriptor.total() != kDescriptorBytes) {
       throw std::invalid_argument("SearchByProjection: descriptor must have 32 bytes");
     }
-    match[k] = BestCandidate(points[k], frame, grid, options, &distances[k]);
   }
+  const FeatureGrid grid(frame);
+  // Points are searched independently (in parallel); conflicts are resolved afterwards.
+  cv::parallel_for_(cv::Range(0, static_cast<int>(points.size())), [&](const cv::Range& range) {
+    for (int k = range.start; k < range.end; ++k) {
+      match[k] = BestCandidate(points[k], frame, grid, options, &distances[k]);
+    }
+  });
   ResolveConflicts(distances, static_cast<int>(frame.features.size()), &match);
   return match;
 }

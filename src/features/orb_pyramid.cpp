@@ -161,26 +161,30 @@ std::vector<std::vector<cv::KeyPoint>> DetectLevelKeypoints(const std::vector<cv
 
 float IntensityCentroidAngle(const cv::Mat& level, const cv::Point2f& pt) {
   if (level.type() != CV_8UC1) throw std::invalid_argument("IntensityCentroidAngle: not CV_8UC1");
+  constexpr int kRadius = orb::kPatchRadius;
   const int cx = cvRound(pt.x), cy = cvRound(pt.y);
-  const bool inside = cx >= orb::kPatchRadius && cy >= orb::kPatchRadius &&
-                      cx + orb::kPatchRadius < level.cols && cy + orb::kPatchRadius < level.rows;
-  const std::array<int, 2 * orb::kPatchRadius + 1>& half_widths = orb::DiscHalfWidths();
+  const bool inside =
+      cx >= kRadius && cy >= kRadius && cx + kRadius < level.cols && cy + kRadius < level.rows;
+  const std::array<int, 2 * kRadius + 1>& half_widths = orb::DiscHalfWidths();
   long m01 = 0, m10 = 0;  // integer moments: exact
-  for (int dy = -orb::kPatchRadius; dy <= orb::kPatchRadius; ++dy) {
+  for (int dy = -kRadius; dy <= kRadius; ++dy) {
     const int y = cy + dy;
-    if (!inside && (y < 0 || y >= level.rows)) continue;
-    const int half = half_widths[dy + orb::kPatchRadius];
+    if (y < 0 || y >= level.rows) continue;
+    const int half = half_widths[dy + kRadius];
+    // The disc's part of the row, clipped to the image when the disc crosses its border.
+    const int x0 = inside ? -half : std::max(-half, -cx);
+    const int x1 = inside ? half : std::min(half, level.cols - 1 - cx);
     const uchar* row = level.ptr<uchar>(y) + cx;
-    long row_sum = 0;
-    for (int dx = -half; dx <= half; ++dx) {
-      if (!inside && (cx + dx < 0 || cx + dx >= level.cols)) continue;
-      m10 += dx * row[dx];
+    int row_sum = 0, row_moment = 0;
+    for (int dx = x0; dx <= x1; ++dx) {
       row_sum += row[dx];
+      row_moment += dx * row[dx];
     }
-    m01 += dy * row_sum;
+    m10 += row_moment;
+    m01 += static_cast<long>(dy) * row_sum;
   }
-  float angle = static_cast<float>(std::atan2(static_cast<double>(m01), static_cast<double>(m10)) *
-                                   180.0 / CV_PI);
+  const float angle = static_cast<float>(
+      std::atan2(static_cast<double>(m01), static_cast<double>(m10)) * 180.0 / CV_PI);
   return angle < 0.0f ? angle + 360.0f : angle;
 }
 

@@ -63,11 +63,12 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   if (!have_initial_pose) return Lost(&current, std::move(result), "too few pose inliers");
 
   // 4. Front-end static point determination: Delaunay graph, inconsistent edge culling,
-  //    components, largest volume static (Sec. IV, V-A); the others lose their mark.
+  //    components, largest volume static (Sec. IV, V-A); the others lose their mark. Beside it,
+  //    more map points are matched by projection around the initial pose.
   RunFrontEndStaticPoints(&current, &result);
   result.times.static_points_ms = stage.Restart();
 
-  // 5. More map points by projection, then the pose from static points only.
+  // 5. The pose from static points only.
   const bool tracked = RefinePoseWithStaticPoints(&current, &result);
   result.times.refine_ms = stage.Restart();
   if (!tracked) return Lost(&current, std::move(result), "too few static inliers");

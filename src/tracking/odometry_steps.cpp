@@ -1,11 +1,36 @@
 // The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
 #include <algorithm>
+#include <exception>
 #include <unordered_set>
+
+#include <opencv2/core/utility.hpp>
 
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/odometry.h"
 
 namespace dslam {
+namespace {
+
+// Runs `first` and `second` in parallel on OpenCV's thread pool (one after the other with one
+// thread) and returns when both are done; an exception of either is rethrown here.
+template <typename First, typename Second>
+void RunSideBySide(First&& first, Second&& second) {
+  std::exception_ptr errors[2];
+  cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& range) {
+    for (int task = range.start; task < range.end; ++task) {
+      try {
+        task == 0 ? first() : second();
+      } catch (...) {
+        errors[task] = std::current_exception();
+      }
+    }
+  });
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+}
+
+}  // namespace
 
 void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                    bool wide) {
@@ -23,16 +48,23 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
 
 void Odometry::MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                          double radius_px) {
+  const std::vector<PointMatch> more =
+      UnmatchedLocalPointMatches(*current, T_camera_world, radius_px, &current->feature_taken);
+  current->matches.insert(current->matches.end(), more.begin(), more.end());
+}
+
+std::vector<PointMatch> Odometry::UnmatchedLocalPointMatches(
+    const Current& current, const Eigen::Isometry3d& T_camera_world, double radius_px,
+    std::vector<bool>* feature_taken) {
   std::unordered_set<PointId> matched;
-  for (const PointMatch& m : current->matches) matched.insert(m.id);
+  for (const PointMatch& m : current.matches) matched.insert(m.id);
   std::vector<PointId> rest;
-  for (PointId id : current->local_points) {
+  for (PointId id : current.local_points) {
     if (!matched.count(id)) rest.push_back(id);
   }
-  const std::vector<PointMatch> more =
-      MatchLocalMap(&map_, rest, current->features, *current->frame->camera, T_camera_world,
-                    radius_px, config_.tracking.search_min_depth_m, false, &current->feature_taken);
-  current->matches.insert(current->matches.end(), more.begin(), more.end());
+  // count_visible = false: MatchLocalMap then writes no map point.
+  return MatchLocalMap(&map_, rest, current.features, *current.frame->camera, T_camera_world,
+                       radius_px, config_.tracking.search_min_depth_m, false, feature_taken);
 }
 
 bool Odometry::EnoughInliers(const PoseResult& pose) const {
@@ -98,6 +130,23 @@ std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const 
 }
 
 void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
+  // The search needs the initial pose and the matches so far, not the labels; the labelling
+  // writes only points' labels, which the search does not read (see MatchLocalMap). The search
+  // works on a copy of feature_taken, which the labelling does not read either.
+  std::vector<PointMatch> more;
+  std::vector<bool> taken = current->feature_taken;
+  RunSideBySide(
+      [&] {
+        more = UnmatchedLocalPointMatches(*current, current->T_camera_world,
+                                          config_.tracking.search_radius_px, &taken);
+      },
+      [&] { DetermineFrontEndLabels(current, result); });
+  current->feature_taken = std::move(taken);
+  current->matches.insert(current->matches.end(), more.begin(), more.end());
+  current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged
+}
+
+void Odometry::DetermineFrontEndLabels(Current* current, FrameResult* result) {
   if (!config_.static_points.enabled) return;  // the static-world baseline
   current->static_points = DetermineStaticPointsFrontEnd(
       map_, current->matches, current->features, current->T_camera_world, FrontEndReferenceFrames(),
@@ -113,8 +162,6 @@ void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
 }
 
 bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result) {
-  MatchUnmatchedLocalPoints(current, current->T_camera_world, config_.tracking.search_radius_px);
-  current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged
   if (!SolvePose(current, current->T_camera_world,
                  static_cast<uint32_t>(result->frame_index) + 1u)) {
     return false;

@@ -80,6 +80,12 @@ class Odometry {
                                        const Eigen::Isometry3d& T_camera_world) const;
   void MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                  double radius_px);
+  /// Matches of the local points not yet matched (projected with `T_camera_world`) to features
+  /// not yet taken; marks the features taken. Reads the map only (no point is written).
+  std::vector<PointMatch> UnmatchedLocalPointMatches(const Current& current,
+                                                     const Eigen::Isometry3d& T_camera_world,
+                                                     double radius_px,
+                                                     std::vector<bool>* feature_taken);
   /// Pose from static points (verified, else marked) starting at `T_camera_world_guess`; when
   /// they give too few inliers, a RANSAC pose over all matches. Sets current->pose and, on
   /// success, current->T_camera_world. False: too few inliers either way.
@@ -89,7 +95,10 @@ class Odometry {
   PoseResult RobustPose(const Current& current, PointSelection voters, uint32_t ransac_seed) const;
   bool EnoughInliers(const PoseResult& pose) const;  ///< success and >= min_static_inliers
   std::vector<const FrameMeasurements*> FrontEndReferenceFrames() const;
+  /// Front-end static point determination and, beside it (in parallel), more local-map matches
+  /// around the initial pose; those matches are appended after it, not yet judged.
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);
+  void DetermineFrontEndLabels(Current* current, FrameResult* result);
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(int static_matches) const;
