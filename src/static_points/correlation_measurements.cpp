@@ -31,6 +31,23 @@ std::vector<std::vector<std::pair<int, int>>> ObservationsByPoint(const Correlat
   return by_point;
 }
 
+// Calls f(observation of a, observation of b) for every frame both point lists (sorted by frame)
+// have an observation in.
+template <typename F>
+void ForCommonFrames(const std::vector<std::pair<int, int>>& a,
+                     const std::vector<std::pair<int, int>>& b, F&& f) {
+  size_t ia = 0, ib = 0;
+  while (ia < a.size() && ib < b.size()) {
+    if (a[ia].first < b[ib].first) {
+      ++ia;
+    } else if (b[ib].first < a[ia].first) {
+      ++ib;
+    } else {
+      f(a[ia++].second, b[ib++].second);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& input,
@@ -41,27 +58,20 @@ std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& in
   }
   const auto by_point = ObservationsByPoint(input);
   const int num_points = static_cast<int>(by_point.size());
-  std::vector<CorrelationMeasurement> measurements;
-  measurements.reserve(edges.size() * 2);
+  size_t count = 0;  // one pass to count, so that the vector is allocated once
   for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
     const GraphEdge& edge = edges[e];
     if (edge.i < 0 || edge.j >= num_points || edge.i >= edge.j) {
       throw std::invalid_argument("edge " + std::to_string(e) + " is not 0 <= i < j < N");
     }
-    const auto& a = by_point[edge.i];
-    const auto& b = by_point[edge.j];
-    size_t ia = 0, ib = 0;
-    while (ia < a.size() && ib < b.size()) {
-      if (a[ia].first < b[ib].first) {
-        ++ia;
-        continue;
-      }
-      if (b[ib].first < a[ia].first) {
-        ++ib;
-        continue;
-      }
-      const PointObservation& oi = input.observations[a[ia].second];
-      const PointObservation& oj = input.observations[b[ib].second];
+    ForCommonFrames(by_point[edge.i], by_point[edge.j], [&count](int, int) { ++count; });
+  }
+  std::vector<CorrelationMeasurement> measurements;
+  measurements.reserve(count);
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    ForCommonFrames(by_point[edges[e].i], by_point[edges[e].j], [&](int oi_index, int oj_index) {
+      const PointObservation& oi = input.observations[oi_index];
+      const PointObservation& oj = input.observations[oj_index];
       CorrelationMeasurement m;
       m.edge = e;
       m.frame = oi.frame;
@@ -73,9 +83,7 @@ std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& in
       m.information = covariance.inverse();
       m.R_camera_world = input.T_camera_world[oi.frame].linear();
       measurements.push_back(m);
-      ++ia;
-      ++ib;
-    }
+    });
   }
   return measurements;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "dslam/static_points/graph_subset.h"
+
 namespace dslam {
 namespace {
 
@@ -15,27 +17,23 @@ void AddObservation(int point, int frame, const Eigen::Vector3d& y, const Eigen:
   input->observations.push_back(obs);
 }
 
-}  // namespace
-
-FrontEndStaticPoints DetermineStaticPointsFrontEnd(
-    const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
-    const Eigen::Isometry3d& T_camera_world,
-    const std::vector<const FrameMeasurements*>& reference_frames,
-    const StaticPointsConfig& config) {
-  FrontEndStaticPoints out;
+// The correlation problem over the matches `graph_match`: frame 0 is the current frame, frame
+// k + 1 reference_frames[k].
+CorrelationInput BuildInput(const Map& map, const std::vector<PointMatch>& matches,
+                            const FrameFeatures& features, const Eigen::Isometry3d& T_camera_world,
+                            const std::vector<const FrameMeasurements*>& reference_frames,
+                            const std::vector<int>& graph_match) {
   CorrelationInput input;
-  input.T_camera_world.push_back(T_camera_world);  // frame 0: current
+  input.T_camera_world.push_back(T_camera_world);
   for (const FrameMeasurements* frame : reference_frames) {
     input.T_camera_world.push_back(frame->T_camera_world);
   }
-  for (size_t m = 0; m < matches.size(); ++m) {
+  for (int m : graph_match) {
     const MapPoint* point = map.Find(matches[m].id);
-    const auto& measurement = features.features[matches[m].feature].measurement;
-    if (point == nullptr || !measurement) continue;
+    const PointMeasurement& measurement = *features.features[matches[m].feature].measurement;
     const int index = static_cast<int>(input.points_world.size());
     input.points_world.push_back(point->p_world);
-    out.graph_match.push_back(static_cast<int>(m));
-    AddObservation(index, 0, measurement->y_camera, measurement->covariance, &input);
+    AddObservation(index, 0, measurement.y_camera, measurement.covariance, &input);
     for (size_t k = 0; k < reference_frames.size(); ++k) {
       const auto found = reference_frames[k]->by_point.find(point->id);
       if (found == reference_frames[k]->by_point.end()) continue;
@@ -43,9 +41,87 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
                      found->second.covariance, &input);
     }
   }
-  if (static_cast<int>(input.points_world.size()) < config.min_graph_points) return out;
+  return input;
+}
+
+// Indices into `usable` of the graph's points: all of them up to max_points; else every
+// unsettled point (unmarked, or a candidate not yet verified: where motion is still being
+// decided), thinned evenly over the image only if they alone exceed max_points, and verified
+// static points spread evenly over the image for the rest.
+std::vector<int> GraphSubset(const Map& map, const std::vector<PointMatch>& matches,
+                             const FrameFeatures& features, const std::vector<int>& usable,
+                             int max_points) {
+  std::vector<int> all(usable.size());
+  for (size_t u = 0; u < usable.size(); ++u) all[u] = static_cast<int>(u);
+  if (static_cast<int>(usable.size()) <= max_points) return all;
+  std::vector<int> groups[2];  // 0: unsettled, 1: verified static
+  std::vector<Eigen::Vector2d> uv[2];
+  for (size_t u = 0; u < usable.size(); ++u) {
+    const PointMatch& match = matches[usable[u]];
+    const int group = map.Find(match.id)->IsVerifiedStatic() ? 1 : 0;
+    groups[group].push_back(static_cast<int>(u));
+    uv[group].push_back(features.features[match.feature].uv_ideal);
+  }
+  std::vector<int> chosen;
+  for (int group = 0; group < 2; ++group) {
+    const int room = max_points - static_cast<int>(chosen.size());
+    for (int k : SpatiallyEvenSubset(uv[group], room)) chosen.push_back(groups[group][k]);
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
+// Appends the usable matches left out of the graph (usable minus chosen, both increasing) to
+// out->graph_match with the label of their nearest graph point.
+void LabelLeftOutPoints(const Map& map, const std::vector<PointMatch>& matches,
+                        const std::vector<int>& usable, const std::vector<int>& chosen,
+                        FrontEndStaticPoints* out) {
+  if (chosen.size() == usable.size()) return;
+  std::vector<int> left_out;
+  std::vector<Eigen::Vector3d> left_out_world;
+  for (size_t u = 0, c = 0; u < usable.size(); ++u) {
+    if (c < chosen.size() && chosen[c] == static_cast<int>(u)) {
+      ++c;
+      continue;
+    }
+    left_out.push_back(usable[u]);
+    left_out_world.push_back(map.Find(matches[usable[u]].id)->p_world);
+  }
+  StaticPointsResult& result = out->result;
+  const std::vector<Eigen::Vector3d> graph_points = result.points_world;
+  const std::vector<int> nearest = NearestGraphPoints(graph_points, left_out_world);
+  for (size_t k = 0; k < left_out.size(); ++k) {
+    out->graph_match.push_back(left_out[k]);
+    result.labels.push_back(InheritedLabel(result.labels[nearest[k]]));
+    result.component.push_back(result.component[nearest[k]]);
+    result.points_world.push_back(left_out_world[k]);
+  }
+}
+
+}  // namespace
+
+FrontEndStaticPoints DetermineStaticPointsFrontEnd(
+    const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
+    const Eigen::Isometry3d& T_camera_world,
+    const std::vector<const FrameMeasurements*>& reference_frames,
+    const StaticPointsConfig& config) {
+  // The matches the graph can use: a map point with a depth measurement in this frame.
+  std::vector<int> usable;
+  for (size_t m = 0; m < matches.size(); ++m) {
+    if (map.Find(matches[m].id) != nullptr && features.features[matches[m].feature].measurement) {
+      usable.push_back(static_cast<int>(m));
+    }
+  }
+  FrontEndStaticPoints out;
+  if (static_cast<int>(usable.size()) < config.min_graph_points) return out;
+  const std::vector<int> chosen =
+      GraphSubset(map, matches, features, usable, config.max_graph_points);
+  for (int c : chosen) out.graph_match.push_back(usable[c]);
+  const CorrelationInput input =
+      BuildInput(map, matches, features, T_camera_world, reference_frames, out.graph_match);
   out.result = DetermineStaticPoints(input, config);
   out.ran = true;
+  LabelLeftOutPoints(map, matches, usable, chosen, &out);
   return out;
 }
 

@@ -21,6 +21,7 @@ struct StaticPointsConfig {
   double min_inlier_fraction = 1.0;
   int min_edge_measurements = 2;
   int min_graph_points = 8;
+  int max_graph_points = 500;
   int min_component_points = 4;
   int min_static_points = 10;
 
@@ -56,6 +57,12 @@ struct StaticPointsConfig {
     v(Field("min_graph_points", "-", 4, 1000000,
             "fewer matched points with depth: the front end skips static point determination"),
       s.min_graph_points);
+    // The Delaunay graph's cost grows faster than linearly with its points; above this count
+    // the front end builds it over a subset spread evenly over the image, and the points left
+    // out take the static/dynamic label of their nearest graph point (graph_subset.h).
+    v(Field("max_graph_points", "-", 4, 1000000,
+            "front end: more matched points are subsampled evenly over the image for the graph"),
+      s.max_graph_points);
     v(Field("min_component_points", "-", 1, 1000000,
             "smaller components are never chosen as static"),
       s.min_component_points);
