@@ -32,10 +32,11 @@ def run(cmd):
     return proc.stdout
 
 
-def render(scenario, seed, frames, cache):
+def render(scenario, seed, frames, cache, bin_dir=BIN):
+    """The folder of (scenario, seed) in `cache`, rendered once by bin_dir's dslam_synth."""
     folder = os.path.join(cache, f"{scenario}_f{frames}_s{seed}")
     if not os.path.exists(os.path.join(folder, "groundtruth.txt")):
-        run([os.path.join(BIN, "dslam_synth"), "--scenario", scenario, "--frames", str(frames),
+        run([os.path.join(bin_dir, "dslam_synth"), "--scenario", scenario, "--frames", str(frames),
              "--seed", str(seed), "--output", folder])
     return folder
 
@@ -48,10 +49,12 @@ VARIANTS = {
 }
 
 
-def evaluate(folder, camera, variant, out_dir, config):
+def evaluate(folder, camera, variant, out_dir, config, run_bin=BIN, eval_bin=BIN):
+    """Runs run_bin's dslam_run_dataset (`variant`) on `folder` and eval_bin's dslam_eval on its
+    trajectory (outputs in out_dir); returns the run's summary and the evaluation together."""
     traj = os.path.join(out_dir, f"trajectory_{variant}.txt")
     summary = os.path.join(out_dir, f"summary_{variant}.json")
-    cmd = [os.path.join(BIN, "dslam_run_dataset"), "--dataset", folder, "--trajectory", traj,
+    cmd = [os.path.join(run_bin, "dslam_run_dataset"), "--dataset", folder, "--trajectory", traj,
            "--status", os.path.join(out_dir, f"status_{variant}.csv"), "--summary", summary,
            "--quiet"] + VARIANTS[variant]
     if camera:
@@ -60,7 +63,7 @@ def evaluate(folder, camera, variant, out_dir, config):
         cmd += ["--config", config]
     run(cmd)
     metrics = os.path.join(out_dir, f"eval_{variant}.json")
-    ev = [os.path.join(BIN, "dslam_eval"), "--groundtruth", os.path.join(folder, "groundtruth.txt"),
+    ev = [os.path.join(eval_bin, "dslam_eval"), "--groundtruth", os.path.join(folder, "groundtruth.txt"),
           "--trajectory", traj, "--frames", os.path.join(folder, "rgb.txt"), "--json", metrics]
     ev += ["--camera", camera or os.path.join(folder, "camera.yaml")]
     run(ev)
@@ -84,19 +87,32 @@ HEADER = ("| sequence | ATE [m] | ATE back end on [m] | ATE static points off [m
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 
 
+def has_movers(result):
+    """Whether the scene of a run's summary has truly dynamic candidate points."""
+    return result.get("true_dynamic", 0) + result.get("missed_dynamic", 0) > 0
+
+
+SEGMENTATION_DIGITS = (("dynamic_precision", 3), ("dynamic_recall", 3), ("false_dynamic_rate", 4))
+
+
+def segmentation_scores(result, moving):
+    """The scored segmentation numbers of a run: precision and recall only where the scene has
+    movers, the share of static points wrongly dynamic where it has truth."""
+    names = ("dynamic_precision", "dynamic_recall", "false_dynamic_rate") if moving \
+        else ("false_dynamic_rate",)
+    return {name: result[name] for name in names if name in result}
+
+
 def segmentation(result, moving):
     """precision | recall | static wrongly dynamic, '-' where the scene has no truth or movers."""
-    if moving:
-        return (f"{result['dynamic_precision']:.3f} | {result['dynamic_recall']:.3f} | "
-                f"{result['false_dynamic_rate']:.4f}")
-    if "false_dynamic_rate" in result:
-        return f"- | - | {result['false_dynamic_rate']:.4f}"
-    return "- | - | -"
+    scores = segmentation_scores(result, moving)
+    return " | ".join(f"{scores[name]:.{digits}f}" if name in scores else "-"
+                      for name, digits in SEGMENTATION_DIGITS)
 
 
 def row(name, results):
     on, backend, no_static = (results[v] for v in ("dslam", "backend_on", "static_off"))
-    moving = on.get("true_dynamic", 0) + on.get("missed_dynamic", 0) > 0  # a scene with movers
+    moving = has_movers(on)
     seg = segmentation(on, moving) + f" | {on['labelled_dynamic_share']:.4f}"
     seg += " | " + segmentation(backend, moving).replace(" | ", " / ")
     tracked = on["frames_with_pose"] / max(on["frames"], 1)

@@ -83,15 +83,16 @@ def tool_target(tree, tool):
     return tool + "_main"
 
 
-def prepare_reference(commit):
-    """Extracts and builds the reference commit once; returns (bin folder, full hash, text on
-    the build: its wall time, measured when it was built and kept in the workspace)."""
+def prepare_reference(commit, tools=("dslam_run_dataset",)):
+    """Extracts the reference commit once and builds its `tools` unless all are built already;
+    returns (bin folder, full hash, text on the build: its wall time, measured when it was built
+    and kept in the workspace)."""
     full = git("rev-parse", "--verify", commit + "^{commit}")
     tree = os.path.join(REPO, "build", "reference", commit)
     ws = tree + "-ws"
     bin_dir = os.path.join(ws, "devel", "lib", "dslam")
     timing = os.path.join(ws, "reference_build_seconds.txt")
-    if os.access(os.path.join(bin_dir, "dslam_run_dataset"), os.X_OK):
+    if all(os.access(os.path.join(bin_dir, tool), os.X_OK) for tool in tools):
         seconds = "unknown"
         if os.path.exists(timing):
             with open(timing) as handle:
@@ -108,8 +109,8 @@ def prepare_reference(commit):
     os.makedirs(ws, exist_ok=True)
     print(f"building the reference {commit} in {ws} (once) ...", file=sys.stderr, flush=True)
     start = time.monotonic()
-    check_run([os.path.join(tree, "scripts", "setup.sh"), tool_target(tree, "dslam_run_dataset")],
-              env=build_env(ws))
+    check_run([os.path.join(tree, "scripts", "setup.sh")] + [tool_target(tree, tool)
+                                                            for tool in tools], env=build_env(ws))
     seconds = f"{time.monotonic() - start:.0f}"
     with open(timing, "w") as handle:
         handle.write(seconds + "\n")
