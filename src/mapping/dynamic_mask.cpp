@@ -159,6 +159,7 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
       seeds.box_max = seeds.box_max.cwiseMax(moving[i].p_camera);
       const int cell = SeedCell(grid, moving[i]);
       if (cell >= 0) seeds.cells.push_back(cell);
+      seeds.point_cells.push_back(cell);
       seeds.points.push_back(moving[i].id);
       seeds.points_camera.push_back(moving[i].p_camera);
     }

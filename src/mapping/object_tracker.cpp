@@ -23,18 +23,10 @@ bool RegionVelocity(const DynamicRegion& region, const std::deque<PointPositions
                     Eigen::Vector3d* velocity) {
   std::vector<double> axes[3];
   for (size_t i = 0; i < region.points.size(); ++i) {
-    for (const PointPositions& before : history) {
-      const double dt_s = stamp_s - before.stamp_s;
-      if (dt_s > baseline_s || dt_s <= 0.0) continue;
-      const auto p = before.by_id.find(region.points[i]);
-      if (p == before.by_id.end()) continue;
-      const Eigen::Vector3d v = (region.points_world[i] - p->second) / dt_s;
-      // Faster: the point was matched to another thing's feature (an unmarked point follows its
-      // matches), not a motion.
-      if (v.norm() <= config.max_point_speed_mps) {
-        for (int a = 0; a < 3; ++a) axes[a].push_back(v[a]);
-      }
-      break;
+    Eigen::Vector3d v;
+    if (PointVelocity(region.points[i], region.points_world[i], history, stamp_s, baseline_s,
+                      config, &v)) {
+      for (int a = 0; a < 3; ++a) axes[a].push_back(v[a]);
     }
   }
   if (static_cast<int>(axes[0].size()) < config.min_velocity_points) return false;
@@ -43,6 +35,22 @@ bool RegionVelocity(const DynamicRegion& region, const std::deque<PointPositions
 }
 
 }  // namespace
+
+bool PointVelocity(PointId id, const Eigen::Vector3d& p_world,
+                   const std::deque<PointPositions>& history, double stamp_s, double baseline_s,
+                   const ObjectsConfig& config, Eigen::Vector3d* velocity) {
+  for (const PointPositions& before : history) {
+    const double dt_s = stamp_s - before.stamp_s;
+    if (dt_s > baseline_s || dt_s <= 0.0) continue;
+    const auto p = before.by_id.find(id);
+    if (p == before.by_id.end()) continue;
+    *velocity = (p_world - p->second) / dt_s;
+    // Faster: the point was matched to another thing's feature (an unmarked point follows its
+    // matches), not a motion.
+    return velocity->norm() <= config.max_point_speed_mps;
+  }
+  return false;
+}
 
 PointPositions PositionsOf(const DynamicMask& mask, double stamp_s) {
   PointPositions positions;

@@ -64,6 +64,10 @@ struct ObjectsConfig {
   double velocity_baseline_s = 0.034;
   double motion_baseline_s = 0.25;
   double max_point_speed_mps = 4.0;
+  double split_speed_mps = 0.5;
+  int split_min_points = 5;
+  double split_max_overlap = 0.5;
+  double split_min_distance_m = 0.4;
   int min_hits = 3;
   double min_speed_mps = 0.2;
   double coast_s = 0.2;
@@ -105,6 +109,26 @@ struct ObjectsConfig {
     // re-matched on the wall behind: left out of the median.
     v(Field("max_point_speed_mps", "m/s", 0.01, 1000.0, "faster point velocities are outliers"),
       s.max_point_speed_mps);
+    // A region whose points' velocities (over motion_baseline_s) form two groups (two-means)
+    // whose per-axis medians differ by at least split_speed_mps, each group with at least
+    // split_min_points points, is split in two (dslam/mapping/region_split.h): two people that
+    // came close enough to be one cluster. A large split_speed_mps (e.g. 100) never splits.
+    v(Field("split_speed_mps", "m/s", 0.01, 1000.0,
+            "velocity difference of two groups of a region's points that splits it"),
+      s.split_speed_mps);
+    v(Field("split_min_points", "-", 1, 10000, "points with a velocity each split part needs"),
+      s.split_min_points);
+    // The two groups must also stand side by side in the image: the overlap of their horizontal
+    // ranges (10th-90th percentile of the optical x of their points) at most this share of the
+    // narrower range. A leg moving unlike the body above it overlaps the body's range.
+    v(Field("split_max_overlap", "-", 0.0, 1.0,
+            "largest horizontal overlap of two split groups (share of the narrower)"),
+      s.split_max_overlap);
+    // ... and their points' per-axis median positions at least split_min_distance_m apart (two
+    // people side by side are a body's width apart; parts of one near person are not).
+    v(Field("split_min_distance_m", "m", 0.0, 10.0,
+            "smallest distance of the median positions of two split groups"),
+      s.split_min_distance_m);
     // A track is reported once min_hits consecutive observations had a point velocity of at
     // least min_speed_mps: static surfaces mislabelled for a while are not objects. A walker that
     // stops stays reported (it moved before).

@@ -34,6 +34,8 @@ struct DynamicRegion {
   std::vector<PointId> points;  ///< the unmarked points that seeded it
   /// [m] those points measured in this frame (depth at their pixels), world frame; same order.
   std::vector<Eigen::Vector3d> points_world;
+  /// The mask cell each of those points seeded (index row * cols + col), -1 when none; same order.
+  std::vector<int> point_cells;
   int cells = 0;  ///< mask cells it covers
   /// [m] mean of its cells' back-projected points, world frame (the T_world_camera given).
   Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();

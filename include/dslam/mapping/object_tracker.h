@@ -46,6 +46,14 @@ struct PointPositions {
 /// The positions of the points seeding `mask`'s regions, stamped `stamp_s` [s].
 PointPositions PositionsOf(const DynamicMask& mask, double stamp_s);
 
+/// Velocity [m/s, world frame] of point `id` at `p_world` [m] at `stamp_s` [s], from its oldest
+/// position in `history` (oldest first) at most `baseline_s` [s] old. False when no such position
+/// exists or the speed exceeds ObjectsConfig::max_point_speed_mps (a match to another thing's
+/// feature, not a motion).
+bool PointVelocity(PointId id, const Eigen::Vector3d& p_world,
+                   const std::deque<PointPositions>& history, double stamp_s, double baseline_s,
+                   const ObjectsConfig& config, Eigen::Vector3d* velocity);
+
 /// A tracked moving object as reported for one frame.
 struct TrackedObject {
   int id = 0;                                                ///< stable across frames, from 1
