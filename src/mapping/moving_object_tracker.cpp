@@ -17,8 +17,8 @@ std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
   if (!result.has_pose) return {};
   mask_ = ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_);
   if (!history_.empty() && !(result.stamp_s > history_.back().stamp_s)) history_.clear();
-  SplitRegionsByVelocity(frame, result.T_world_camera, history_, result.stamp_s, mask_config_,
-                         objects_config_, &mask_);
+  SplitRegions(frame, result.T_world_camera, history_, result.stamp_s,
+               tracker_.PredictedPositions(result.stamp_s), mask_config_, objects_config_, &mask_);
   std::vector<ObjectObservation> observations =
       ObservationsFromMask(mask_, objects_config_, result.stamp_s, history_);
   history_.push_back(PositionsOf(mask_, result.stamp_s));

@@ -169,6 +169,18 @@ std::vector<int> ObjectTracker::Associate(
   return track_of;
 }
 
+std::vector<Eigen::Vector3d> ObjectTracker::PredictedPositions(double stamp_s) const {
+  std::vector<Eigen::Vector3d> predicted;
+  if (!has_stamp_ || !(stamp_s > last_stamp_s_) || stamp_s - last_stamp_s_ > config_.max_unseen_s) {
+    return predicted;
+  }
+  for (const Track& track : tracks_) {
+    if (!track.moved || stamp_s - track.last_seen_s > config_.max_unseen_s) continue;
+    predicted.push_back(track.x.head<3>() + (stamp_s - last_stamp_s_) * track.x.tail<3>());
+  }
+  return predicted;
+}
+
 std::vector<TrackedObject> ObjectTracker::Update(
     double stamp_s, const std::vector<ObjectObservation>& observations) {
   if (has_stamp_ &&

@@ -121,14 +121,26 @@ std::pair<double, double> Range(std::vector<double> values) {
   return {values[n / 10], values[n - 1 - n / 10]};
 }
 
-/// Whether two groups of points (optical frame) stand side by side: the overlap of their
-/// horizontal (optical x) ranges is at most `max_overlap` of the narrower range. Parts of one
-/// thing moving differently (a leg under the body) overlap more.
-bool SideBySide(const std::vector<double> x[2], double max_overlap) {
+/// Whether the two groups (0, 1; -1: neither) of `region`'s points are two things side by
+/// side: the overlap of their horizontal ranges (optical x) is at most split_max_overlap of the
+/// narrower range (parts of one thing moving differently, a leg under the body, overlap more),
+/// and their per-axis median positions are at least split_min_distance_m apart.
+bool SideBySide(const DynamicRegion& region, const std::vector<int>& groups,
+                const Eigen::Isometry3d& T_camera_world, const ObjectsConfig& config) {
+  std::vector<double> x[2];
+  std::vector<Eigen::Vector3d> positions[2];
+  for (size_t i = 0; i < groups.size(); ++i) {
+    if (groups[i] < 0) continue;
+    x[groups[i]].push_back((T_camera_world * region.points_world[i]).x());
+    positions[groups[i]].push_back(region.points_world[i]);
+  }
+  if (x[0].empty() || x[1].empty()) return false;
   const auto a = Range(x[0]), b = Range(x[1]);
   const double overlap = std::min(a.second, b.second) - std::max(a.first, b.first);
   const double narrower = std::min(a.second - a.first, b.second - b.first);
-  return overlap <= max_overlap * narrower;
+  return overlap <= config.split_max_overlap * narrower &&
+         (AxisMedians(positions[0]) - AxisMedians(positions[1])).norm() >=
+             config.split_min_distance_m;
 }
 
 /// The velocity groups of `region`'s points (-1: no velocity), or empty when it is one thing.
@@ -150,26 +162,54 @@ std::vector<int> VelocityGroups(const DynamicRegion& region,
   if (static_cast<int>(velocities.size()) < 2 * config.split_min_points) return {};
   const std::vector<int> group = TwoMeans(velocities);
   if (group.empty()) return {};
-  std::vector<Eigen::Vector3d> members[2], positions[2];
-  std::vector<double> x[2];
-  for (size_t k = 0; k < group.size(); ++k) {
-    members[group[k]].push_back(velocities[k]);
-    positions[group[k]].push_back(region.points_world[index[k]]);
-    x[group[k]].push_back((T_camera_world * region.points_world[index[k]]).x());
-  }
+  std::vector<Eigen::Vector3d> members[2];
+  for (size_t k = 0; k < group.size(); ++k) members[group[k]].push_back(velocities[k]);
   for (const auto& m : members) {
     if (static_cast<int>(m.size()) < config.split_min_points) return {};
   }
   if ((AxisMedians(members[0]) - AxisMedians(members[1])).norm() < config.split_speed_mps) {
     return {};
   }
-  if (!SideBySide(x, config.split_max_overlap)) return {};
-  if ((AxisMedians(positions[0]) - AxisMedians(positions[1])).norm() <
-      config.split_min_distance_m) {
-    return {};
-  }
   std::vector<int> groups(region.points.size(), -1);
   for (size_t k = 0; k < group.size(); ++k) groups[index[k]] = group[k];
+  if (!SideBySide(region, groups, T_camera_world, config)) return {};
+  return groups;
+}
+
+/// The groups of `region`'s points by the nearer of the two farthest-apart `predicted` track
+/// positions [m, world] inside the region's box, when those are at least split_min_distance_m
+/// apart and both groups have split_min_points points; empty otherwise.
+std::vector<int> TrackGroups(const DynamicRegion& region,
+                             const std::vector<Eigen::Vector3d>& predicted,
+                             const Eigen::Isometry3d& T_camera_world, const ObjectsConfig& config) {
+  std::vector<Eigen::Vector3d> inside;
+  for (const Eigen::Vector3d& p : predicted) {
+    if ((p.array() >= region.min_world.array()).all() &&
+        (p.array() <= region.max_world.array()).all()) {
+      inside.push_back(p);
+    }
+  }
+  double farthest = config.split_min_distance_m;
+  int a = -1, b = -1;
+  for (size_t i = 0; i < inside.size(); ++i) {
+    for (size_t j = i + 1; j < inside.size(); ++j) {
+      const double d = (inside[i] - inside[j]).norm();
+      if (d < farthest) continue;
+      farthest = d;
+      a = static_cast<int>(i);
+      b = static_cast<int>(j);
+    }
+  }
+  if (a < 0) return {};
+  std::vector<int> groups(region.points.size());
+  int counts[2] = {0, 0};
+  for (size_t i = 0; i < region.points.size(); ++i) {
+    const Eigen::Vector3d& p = region.points_world[i];
+    groups[i] = (p - inside[b]).squaredNorm() < (p - inside[a]).squaredNorm();
+    ++counts[groups[i]];
+  }
+  if (std::min(counts[0], counts[1]) < config.split_min_points) return {};
+  if (!SideBySide(region, groups, T_camera_world, config)) return {};
   return groups;
 }
 
@@ -205,11 +245,12 @@ void SplitRegion(const CellGrid& grid, const Eigen::Isometry3d& T_world_camera, 
 
 }  // namespace
 
-int SplitRegionsByVelocity(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
-                           const std::deque<PointPositions>& history, double stamp_s,
-                           const DynamicMaskConfig& mask_config,
-                           const ObjectsConfig& objects_config, DynamicMask* mask) {
-  if (history.empty() || mask->regions.empty()) return 0;
+int SplitRegions(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
+                 const std::deque<PointPositions>& history, double stamp_s,
+                 const std::vector<Eigen::Vector3d>& predicted,
+                 const DynamicMaskConfig& mask_config, const ObjectsConfig& objects_config,
+                 DynamicMask* mask) {
+  if (mask->regions.empty()) return 0;
   std::unique_ptr<CellGrid> grid;
   std::vector<int> parts(mask->regions.size(), 1);  // per region: parts of its original region
   std::vector<size_t> origin(mask->regions.size());
@@ -217,10 +258,13 @@ int SplitRegionsByVelocity(const RgbdFrame& frame, const Eigen::Isometry3d& T_wo
   int splits = 0;
   const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
   for (size_t i = 0; i < mask->regions.size();) {
-    const std::vector<int> groups =
-        parts[origin[i]] >= kMaxSplitParts
-            ? std::vector<int>()
-            : VelocityGroups(mask->regions[i], history, stamp_s, T_camera_world, objects_config);
+    std::vector<int> groups;
+    if (parts[origin[i]] < kMaxSplitParts) {
+      groups = TrackGroups(mask->regions[i], predicted, T_camera_world, objects_config);
+      if (groups.empty()) {
+        groups = VelocityGroups(mask->regions[i], history, stamp_s, T_camera_world, objects_config);
+      }
+    }
     if (groups.empty()) {
       ++i;
       continue;

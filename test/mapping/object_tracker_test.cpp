@@ -145,6 +145,25 @@ TEST(ObjectTracker, AWalkerWhoStopsStaysReportedWithZeroVelocity) {
   EXPECT_LT(objects[0].velocity_world.norm(), 0.05);
 }
 
+TEST(ObjectTracker, PredictedPositionsAreThoseOfMovedTracksAtTheStamp) {
+  ObjectTracker tracker{ObjectsConfig()};
+  const Eigen::Vector3d grey(0.5, 0.5, 0.5), v(1.0, 0.0, 0.0);
+  Eigen::Vector3d p(0.0, 0.0, 2.0);
+  EXPECT_TRUE(tracker.PredictedPositions(0.0).empty());
+  for (int i = 0; i < 30; ++i) {
+    p += v / kFps;
+    // A second thing that never moves is never predicted.
+    tracker.Update(i / kFps, {Observe(p, grey, v), Observe({3.0, 0.0, 2.0}, grey, {0, 0, 0})});
+  }
+  const double last = 29 / kFps;
+  const std::vector<Eigen::Vector3d> predicted = tracker.PredictedPositions(last + 0.1);
+  ASSERT_EQ(predicted.size(), 1u);
+  EXPECT_LT((predicted[0] - (p + 0.1 * v)).norm(), 0.02);
+  // A stamp that would clear the tracks predicts nothing.
+  EXPECT_TRUE(tracker.PredictedPositions(last).empty());
+  EXPECT_TRUE(tracker.PredictedPositions(last + ObjectsConfig().max_unseen_s + 0.1).empty());
+}
+
 TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps) {
   // Ten points moving at (1, 0, 0.5) m/s seen in the last frames, one of them re-matched 3 m away
   // (a jump, not a motion), and the frame 0.5 s ago beyond both baselines.

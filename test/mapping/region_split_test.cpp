@@ -69,9 +69,9 @@ TEST(RegionSplit, TwoMoversAtDifferentVelocitiesAreSplitAtTheirBorder) {
                                         DynamicMaskConfig());
   ASSERT_EQ(mask.regions.size(), 1u);  // one cluster: the points meet at the border
   const Eigen::Vector3d velocity[2] = {{1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-  const int splits = SplitRegionsByVelocity(scene.frame, Eigen::Isometry3d::Identity(),
-                                            History(mask, scene, velocity, 0.01), kStampS,
-                                            DynamicMaskConfig(), ObjectsConfig(), &mask);
+  const int splits =
+      SplitRegions(scene.frame, Eigen::Isometry3d::Identity(), History(mask, scene, velocity, 0.01),
+                   kStampS, {}, DynamicMaskConfig(), ObjectsConfig(), &mask);
   EXPECT_EQ(splits, 1);
   ASSERT_EQ(mask.regions.size(), 2u);
   const uint16_t label_a = mask.LabelAt(200, 250), label_b = mask.LabelAt(400, 250);
@@ -101,11 +101,43 @@ TEST(RegionSplit, OneVelocityOrMoversAboveEachOtherStayOneRegion) {
     DynamicMask mask = ComputeDynamicMask(scene->frame, Eigen::Isometry3d::Identity(),
                                           scene->points, DynamicMaskConfig());
     ASSERT_EQ(mask.regions.size(), 1u);
-    EXPECT_EQ(SplitRegionsByVelocity(scene->frame, Eigen::Isometry3d::Identity(),
-                                     History(mask, *scene, velocity, 0.01), kStampS,
-                                     DynamicMaskConfig(), ObjectsConfig(), &mask),
+    EXPECT_EQ(SplitRegions(scene->frame, Eigen::Isometry3d::Identity(),
+                           History(mask, *scene, velocity, 0.01), kStampS, {}, DynamicMaskConfig(),
+                           ObjectsConfig(), &mask),
               0);
     EXPECT_EQ(mask.regions.size(), 1u);
+  }
+}
+
+TEST(RegionSplit, TwoTrackPredictionsSplitMoversThatStopped) {
+  const cv::Rect a(170, 100, 130, 300), b(300, 100, 130, 300);
+  const TwoMovers scene = MakeTwoMovers(a, b, 25, 9);
+  const Eigen::Vector3d still[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  const std::vector<Eigen::Vector3d> predicted = {
+      scene.frame.camera->BackProject({234.5, 249.5}, kDepthM),
+      scene.frame.camera->BackProject({364.5, 249.5}, kDepthM)};
+  // One prediction only, or two of one mover, split nothing.
+  const std::vector<Eigen::Vector3d> one = {predicted[0]};
+  const std::vector<Eigen::Vector3d> close = {
+      predicted[0], scene.frame.camera->BackProject({250.5, 249.5}, kDepthM)};
+  for (const auto* given : {&one, &close, &predicted}) {
+    DynamicMask mask = ComputeDynamicMask(scene.frame, Eigen::Isometry3d::Identity(), scene.points,
+                                          DynamicMaskConfig());
+    ASSERT_EQ(mask.regions.size(), 1u);
+    const int splits =
+        SplitRegions(scene.frame, Eigen::Isometry3d::Identity(), History(mask, scene, still, 0.01),
+                     kStampS, *given, DynamicMaskConfig(), ObjectsConfig(), &mask);
+    if (given != &predicted) {
+      EXPECT_EQ(splits, 0);
+      continue;
+    }
+    EXPECT_EQ(splits, 1);
+    ASSERT_EQ(mask.regions.size(), 2u);
+    for (const DynamicRegion& region : mask.regions) {
+      const int m = scene.mover[region.points.front()];
+      for (PointId id : region.points) EXPECT_EQ(scene.mover[id], m);
+      EXPECT_LT((region.centroid_world - predicted[m]).norm(), 0.05) << m;
+    }
   }
 }
 

@@ -83,6 +83,11 @@ class ObjectTracker {
   std::vector<TrackedObject> Update(double stamp_s,
                                     const std::vector<ObjectObservation>& observations);
 
+  /// [m, world frame] positions at `stamp_s` [s] predicted by the constant-velocity filter of the
+  /// tracks that moved (reported or coasting) and were seen within max_unseen_s; empty when
+  /// Update(stamp_s, ...) would clear the tracks.
+  std::vector<Eigen::Vector3d> PredictedPositions(double stamp_s) const;
+
   /// Forgets every track (ids keep counting up).
   void Reset() { tracks_.clear(); }
 
