@@ -9,6 +9,7 @@ namespace dslam {
 MovingObjectTracker::MovingObjectTracker(const Config& config)
     : mask_config_(config.dynamic_mask),
       objects_config_(config.objects),
+      depth_noise_(config.depth_noise),
       tracker_(config.objects) {}
 
 std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
@@ -20,7 +21,8 @@ std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
   SplitRegions(frame, result.T_world_camera, history_, result.stamp_s,
                tracker_.PredictedPositions(result.stamp_s), mask_config_, objects_config_, &mask_);
   std::vector<ObjectObservation> observations =
-      ObservationsFromMask(mask_, objects_config_, result.stamp_s, history_);
+      ObservationsFromMask(mask_, objects_config_, result.stamp_s, history_, &depth_noise_,
+                           result.T_world_camera.translation());
   history_.push_back(PositionsOf(mask_, result.stamp_s));
   while (result.stamp_s - history_.front().stamp_s >
          std::max(objects_config_.velocity_baseline_s, objects_config_.motion_baseline_s))

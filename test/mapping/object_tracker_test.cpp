@@ -2,6 +2,7 @@
 // centroid noise, crossing movers of different colours, gaps and stamps going backwards.
 #include "dslam/mapping/object_tracker.h"
 
+#include <cmath>
 #include <deque>
 #include <map>
 #include <random>
@@ -131,6 +132,23 @@ TEST(ObjectTracker, AThingWhosePointsNeverMoveIsNeverReported) {
   EXPECT_EQ(tracker.track_count(), 1);
 }
 
+TEST(ObjectTracker, PointSpeedsWithinTheirDepthNoiseAreNoMotion) {
+  // The same 0.3 m/s point speed, its depth-noise sigma 0.2 m/s (never reported) or 0.05 m/s
+  // (reported after min_hits observations).
+  for (const double sigma : {0.2, 0.05}) {
+    ObjectTracker tracker{ObjectsConfig()};
+    std::vector<TrackedObject> objects;
+    for (int i = 0; i < 30; ++i) {
+      ObjectObservation o =
+          Observe({1.0, 0.0, 4.0}, Eigen::Vector3d(0.5, 0.5, 0.5), Eigen::Vector3d(0.3, 0.0, 0.0));
+      o.motion_sigma_mps = sigma;
+      objects = tracker.Update(i / kFps, {o});
+      if (sigma < 0.1 && i + 1 >= ObjectsConfig().min_hits) EXPECT_EQ(objects.size(), 1u) << i;
+    }
+    EXPECT_EQ(objects.size(), sigma < 0.1 ? 1u : 0u);
+  }
+}
+
 TEST(ObjectTracker, AWalkerWhoStopsStaysReportedWithZeroVelocity) {
   ObjectTracker tracker{ObjectsConfig()};
   const Eigen::Vector3d grey(0.5, 0.5, 0.5);
@@ -184,6 +202,7 @@ TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps)
     history[1].by_id[k] = p_now - 0.2 * velocity;
     history[2].by_id[k] = p_now - velocity / kFps;
   }
+  region.centroid_world = Eigen::Vector3d(1.0, 2.0, 2.0);
   mask.regions = {region};
   const std::vector<ObjectObservation> observations =
       ObservationsFromMask(mask, config, 10.0, history);
@@ -191,6 +210,15 @@ TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps)
   ASSERT_TRUE(observations[0].has_velocity);
   EXPECT_LT((observations[0].velocity_world - velocity).norm(), 1e-9);
   EXPECT_NEAR(observations[0].motion_speed_mps, velocity.norm(), 1e-9);
+  EXPECT_EQ(observations[0].motion_sigma_mps, 0.0);  // no noise model given
+  // With the depth noise model and the camera 2 m from the centroid: sigma_d = 1.4e-3 * 2^2 +
+  // 1e-3 m; 9 points over 0.2 s; 1.2533 sqrt(2) sigma_d sqrt(9 / 0.2^2) / 9.
+  const DepthNoiseConfig noise;
+  const std::vector<ObjectObservation> with_noise =
+      ObservationsFromMask(mask, config, 10.0, history, &noise, Eigen::Vector3d(1.0, 2.0, 0.0));
+  ASSERT_EQ(with_noise.size(), 1u);
+  EXPECT_NEAR(with_noise[0].motion_sigma_mps,
+              1.2533 * std::sqrt(2.0) * 6.6e-3 * std::sqrt(9 / 0.04) / 9, 1e-9);
 }
 
 TEST(ObservationsFromMask, SmallRegionsAreLeftOut) {

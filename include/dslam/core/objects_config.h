@@ -70,6 +70,7 @@ struct ObjectsConfig {
   double split_min_distance_m = 0.4;
   int min_hits = 3;
   double min_speed_mps = 0.2;
+  double motion_sigma_factor = 3.0;
   double coast_s = 0.2;
   double max_unseen_s = 1.0;
 
@@ -135,6 +136,12 @@ struct ObjectsConfig {
     v(Field("min_hits", "-", 1, 1000, "observations before a track is reported"), s.min_hits);
     v(Field("min_speed_mps", "m/s", 0.0, 100.0, "speed a track must reach to be reported"),
       s.min_speed_mps);
+    // ... and at least motion_sigma_factor times the speed's standard deviation expected from
+    // depth noise alone (features' depth_noise model at the region centroid's range, the points'
+    // baselines and count): far static surfaces with a few mislabelled points have noisy speeds.
+    v(Field("motion_sigma_factor", "-", 0.0, 100.0,
+            "speed a track must reach, in depth-noise sigmas of its point speed (0: no test)"),
+      s.motion_sigma_factor);
     // Short gaps (no observation: too few unmarked points in a frame) are bridged by the
     // filter's prediction.
     v(Field("coast_s", "s", 0.0, 60.0, "a reported track unseen for up to this is still reported"),

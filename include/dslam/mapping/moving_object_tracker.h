@@ -39,6 +39,7 @@ class MovingObjectTracker {
  private:
   DynamicMaskConfig mask_config_;
   ObjectsConfig objects_config_;
+  DepthNoiseConfig depth_noise_;  ///< for the observations' motion_sigma_mps
   ObjectTracker tracker_;
   DynamicMask mask_;
   std::deque<PointPositions> history_;  ///< recent frames' unmarked points, oldest first

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "dslam/core/features_config.h"
 #include "dslam/core/objects_config.h"
 #include "dslam/mapping/dynamic_mask.h"
 
@@ -34,6 +35,9 @@ struct ObjectObservation {
   /// [m/s] speed of the same median over the longer ObjectsConfig::motion_baseline_s (whether
   /// it moves at all: depth noise averaged over more frames); 0 when not measured.
   double motion_speed_mps = 0.0;
+  /// [m/s] standard deviation of motion_speed_mps expected from depth noise alone (the depth
+  /// sigma at the centroid's range, the points' baselines and count); 0 when not known.
+  double motion_sigma_mps = 0.0;
 };
 
 /// World positions of the unmarked points of one frame, by id: the recent frames' positions, from
@@ -52,7 +56,7 @@ PointPositions PositionsOf(const DynamicMask& mask, double stamp_s);
 /// feature, not a motion).
 bool PointVelocity(PointId id, const Eigen::Vector3d& p_world,
                    const std::deque<PointPositions>& history, double stamp_s, double baseline_s,
-                   const ObjectsConfig& config, Eigen::Vector3d* velocity);
+                   const ObjectsConfig& config, Eigen::Vector3d* velocity, double* dt_s = nullptr);
 
 /// A tracked moving object as reported for one frame.
 struct TrackedObject {
@@ -67,9 +71,12 @@ struct TrackedObject {
 /// The observations of one frame stamped `stamp_s` [s]: the mask's regions with at least
 /// ObjectsConfig::min_points points and min_cells cells; their velocities from `history` (the
 /// recent frames' PositionsOf, oldest first; entries older than velocity_baseline_s are ignored).
-std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
-                                                    const ObjectsConfig& config, double stamp_s,
-                                                    const std::deque<PointPositions>& history);
+/// With `noise` (the depth noise model) and `camera_world` (the camera's position [m], world
+/// frame), each observation's motion_sigma_mps is filled.
+std::vector<ObjectObservation> ObservationsFromMask(
+    const DynamicMask& mask, const ObjectsConfig& config, double stamp_s,
+    const std::deque<PointPositions>& history, const DepthNoiseConfig* noise = nullptr,
+    const Eigen::Vector3d& camera_world = Eigen::Vector3d::Zero());
 
 /// Tracks of moving objects over a sequence of frames (one thread).
 class ObjectTracker {
@@ -106,6 +113,9 @@ class ObjectTracker {
   };
 
   void Predict(Track* track, double dt_s) const;
+  /// Whether the observation's points moved: motion_speed_mps at least min_speed_mps and at
+  /// least motion_sigma_factor times motion_sigma_mps.
+  bool Moving(const ObjectObservation& observation) const;
   void Correct(Track* track, const ObjectObservation& observation, double stamp_s) const;
   Track StartTrack(const ObjectObservation& observation, double stamp_s);
   /// Greedy association: for each observation, the index of its track or -1.
