@@ -72,16 +72,20 @@ PointPositions PositionsOf(const DynamicMask& mask, double stamp_s) {
   return positions;
 }
 
-std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
-                                                    const ObjectsConfig& config, double stamp_s,
-                                                    const std::deque<PointPositions>& history,
-                                                    const DepthNoiseConfig* noise,
-                                                    const Eigen::Vector3d& camera_world) {
+std::vector<ObjectObservation> ObservationsFromMask(
+    const DynamicMask& mask, const ObjectsConfig& config, double stamp_s,
+    const std::deque<PointPositions>& history, const DepthNoiseConfig* noise,
+    const Eigen::Vector3d& camera_world, const std::vector<Eigen::Vector3d>& near_world) {
   std::vector<ObjectObservation> observations;
   for (const DynamicRegion& region : mask.regions) {
-    if (static_cast<int>(region.points.size()) < config.min_points) continue;
+    const int n = static_cast<int>(region.points.size());
+    const bool near = std::any_of(near_world.begin(), near_world.end(), [&](const auto& p) {
+      return (p - region.centroid_world).norm() <= config.gate_m;
+    });
+    if (n < config.min_points && !(near && n >= config.track_min_points)) continue;
     if (region.cells < config.min_cells) continue;
     ObjectObservation observation;
+    observation.weak = n < config.min_points;
     observation.centroid_world = region.centroid_world;
     observation.extent = region.max_world - region.min_world;
     observation.colour = region.mean_colour;
@@ -144,6 +148,7 @@ void ObjectTracker::Correct(Track* track, const ObjectObservation& observation,
   track->P = 0.5 * (track->P + track->P.transpose()).eval();
   track->last = observation;
   track->last_seen_s = stamp_s;
+  if (!observation.weak) track->last_full_s = stamp_s;
   ++track->hits;
   track->moving_streak = Moving(observation) ? track->moving_streak + 1 : 0;
   if (track->moving_streak >= config_.min_hits) track->moved = true;
@@ -162,7 +167,7 @@ ObjectTracker::Track ObjectTracker::StartTrack(const ObjectObservation& observat
       observation.has_velocity ? config_.velocity_sigma_mps : kInitialVelocitySigmaMps;
   track.P.bottomRightCorner<3, 3>().diagonal().setConstant(velocity_sigma * velocity_sigma);
   track.last = observation;
-  track.first_seen_s = track.last_seen_s = stamp_s;
+  track.first_seen_s = track.last_seen_s = track.last_full_s = stamp_s;
   track.hits = 1;
   track.moving_streak = Moving(observation) ? 1 : 0;
   track.moved = track.moving_streak >= config_.min_hits;
@@ -198,7 +203,7 @@ std::vector<Eigen::Vector3d> ObjectTracker::PredictedPositions(double stamp_s) c
     return predicted;
   }
   for (const Track& track : tracks_) {
-    if (!track.moved || stamp_s - track.last_seen_s > config_.max_unseen_s) continue;
+    if (!track.moved || stamp_s - track.last_full_s > config_.max_unseen_s) continue;
     predicted.push_back(track.x.head<3>() + (stamp_s - last_stamp_s_) * track.x.tail<3>());
   }
   return predicted;
@@ -218,13 +223,13 @@ std::vector<TrackedObject> ObjectTracker::Update(
   for (size_t o = 0; o < observations.size(); ++o) {
     if (track_of[o] >= 0) {
       Correct(&tracks_[track_of[o]], observations[o], stamp_s);
-    } else {
+    } else if (!observations[o].weak) {
       tracks_.push_back(StartTrack(observations[o], stamp_s));
     }
   }
   tracks_.erase(std::remove_if(
                     tracks_.begin(), tracks_.end(),
-                    [&](const Track& t) { return stamp_s - t.last_seen_s > config_.max_unseen_s; }),
+                    [&](const Track& t) { return stamp_s - t.last_full_s > config_.max_unseen_s; }),
                 tracks_.end());
   std::vector<TrackedObject> reported;
   for (const Track& track : tracks_) {

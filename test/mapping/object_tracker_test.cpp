@@ -221,6 +221,51 @@ TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps)
               1.2533 * std::sqrt(2.0) * 6.6e-3 * std::sqrt(9 / 0.04) / 9, 1e-9);
 }
 
+TEST(ObservationsFromMask, RegionsWithFewPointsNearAPredictedTrackAreWeakObservations) {
+  ObjectsConfig config;
+  DynamicMask mask;
+  DynamicRegion region;
+  region.points.assign(config.track_min_points, 0);
+  region.points_world.assign(config.track_min_points, Eigen::Vector3d::Zero());
+  region.cells = 100;
+  region.centroid_world = Eigen::Vector3d(1.0, 0.0, 2.0);
+  mask.regions = {region};
+  EXPECT_TRUE(ObservationsFromMask(mask, config, 0.0, {}).empty());
+  const Eigen::Vector3d far(1.0, 0.0, 2.0 + config.gate_m + 0.1);
+  EXPECT_TRUE(
+      ObservationsFromMask(mask, config, 0.0, {}, nullptr, Eigen::Vector3d::Zero(), {far}).empty());
+  const std::vector<ObjectObservation> near = ObservationsFromMask(
+      mask, config, 0.0, {}, nullptr, Eigen::Vector3d::Zero(), {Eigen::Vector3d(1.2, 0, 2)});
+  ASSERT_EQ(near.size(), 1u);
+  EXPECT_TRUE(near[0].weak);
+}
+
+TEST(ObjectTracker, WeakObservationsStartNoTrackAndKeepNoneAliveBeyondMaxUnseen) {
+  ObjectsConfig config;
+  ObjectTracker tracker{config};
+  const Eigen::Vector3d grey(0.5, 0.5, 0.5), v(1.0, 0.0, 0.0);
+  ObjectObservation weak = Observe({0.0, 0.0, 2.0}, grey, v);
+  weak.weak = true;
+  tracker.Update(0.0, {weak});
+  EXPECT_EQ(tracker.track_count(), 0);
+  Eigen::Vector3d p(0.0, 0.0, 2.0);
+  int i = 0;
+  for (; i < 10; ++i, p += v / kFps) tracker.Update(i / kFps, {Observe(p, grey, v)});
+  const double last_full = (i - 1) / kFps;
+  // Weak observations keep it reported for up to max_unseen_s after its last full one.
+  for (; i / kFps - last_full <= config.max_unseen_s - 0.01; ++i, p += v / kFps) {
+    ObjectObservation o = Observe(p, grey, v);
+    o.weak = true;
+    EXPECT_EQ(tracker.Update(i / kFps, {o}).size(), 1u) << i;
+  }
+  for (int k = 0; k < 5; ++k, ++i, p += v / kFps) {
+    ObjectObservation o = Observe(p, grey, v);
+    o.weak = true;
+    tracker.Update(i / kFps, {o});
+  }
+  EXPECT_EQ(tracker.track_count(), 0);
+}
+
 TEST(ObservationsFromMask, SmallRegionsAreLeftOut) {
   DynamicMask mask;
   DynamicRegion big, few_points, few_cells;

@@ -55,6 +55,7 @@ struct ObjectsConfig {
   bool enabled = true;
   int min_points = 6;
   int min_cells = 20;
+  int track_min_points = 4;
   double gate_m = 0.6;
   double colour_weight_m = 0.3;
   double acceleration_sigma_mps2 = 3.0;
@@ -81,6 +82,12 @@ struct ObjectsConfig {
       s.min_points);
     v(Field("min_cells", "-", 1, 1000000, "mask cells a region needs to become an observation"),
       s.min_cells);
+    // Where a tracked object is expected (its predicted position within gate_m), fewer unmarked
+    // points suffice, both for a cluster (instead of dynamic_mask.min_cluster_points) and for an
+    // observation (instead of min_points): the front end labels few points of a person at times.
+    v(Field("track_min_points", "-", 1, 10000,
+            "unmarked points a cluster or region near a tracked object needs"),
+      s.track_min_points);
     // Association cost = predicted-position distance + colour_weight_m * colour distance (0..1);
     // pairs costing more than gate_m are never associated.
     v(Field("gate_m", "m", 0.01, 10.0, "largest association cost"), s.gate_m);

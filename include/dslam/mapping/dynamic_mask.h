@@ -67,4 +67,14 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
                                const std::vector<ObservedPoint>& points,
                                const DynamicMaskConfig& config);
 
+/// As above, and clusters with fewer than min_cluster_points points but at least
+/// `near_min_points` are kept when the mean of their points lies within `near_m` [m] of one of
+/// `near_world` [m, world frame] (where tracked moving objects are expected: a tracked person
+/// with few unmarked points in this frame).
+DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
+                               const std::vector<ObservedPoint>& points,
+                               const DynamicMaskConfig& config,
+                               const std::vector<Eigen::Vector3d>& near_world, double near_m,
+                               int near_min_points);
+
 }  // namespace dslam

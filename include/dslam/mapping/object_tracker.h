@@ -38,6 +38,10 @@ struct ObjectObservation {
   /// [m/s] standard deviation of motion_speed_mps expected from depth noise alone (the depth
   /// sigma at the centroid's range, the points' baselines and count); 0 when not known.
   double motion_sigma_mps = 0.0;
+  /// Fewer than ObjectsConfig::min_points points (kept near a predicted track position): it
+  /// updates a track but starts none, and a track seen only in such observations for longer than
+  /// max_unseen_s is dropped.
+  bool weak = false;
 };
 
 /// World positions of the unmarked points of one frame, by id: the recent frames' positions, from
@@ -71,12 +75,15 @@ struct TrackedObject {
 /// The observations of one frame stamped `stamp_s` [s]: the mask's regions with at least
 /// ObjectsConfig::min_points points and min_cells cells; their velocities from `history` (the
 /// recent frames' PositionsOf, oldest first; entries older than velocity_baseline_s are ignored).
+/// Regions whose centroid lies within gate_m of one of `near_world` [m, world frame] (predicted
+/// track positions) need only track_min_points points.
 /// With `noise` (the depth noise model) and `camera_world` (the camera's position [m], world
 /// frame), each observation's motion_sigma_mps is filled.
 std::vector<ObjectObservation> ObservationsFromMask(
     const DynamicMask& mask, const ObjectsConfig& config, double stamp_s,
     const std::deque<PointPositions>& history, const DepthNoiseConfig* noise = nullptr,
-    const Eigen::Vector3d& camera_world = Eigen::Vector3d::Zero());
+    const Eigen::Vector3d& camera_world = Eigen::Vector3d::Zero(),
+    const std::vector<Eigen::Vector3d>& near_world = {});
 
 /// Tracks of moving objects over a sequence of frames (one thread).
 class ObjectTracker {
@@ -107,6 +114,7 @@ class ObjectTracker {
     Eigen::Matrix<double, 6, 6> P = Eigen::Matrix<double, 6, 6>::Identity();
     ObjectObservation last;
     double first_seen_s = 0.0, last_seen_s = 0.0;
+    double last_full_s = 0.0;  ///< [s] last observation that was not weak
     int hits = 0;
     int moving_streak = 0;  ///< consecutive observations with a point velocity >= min_speed_mps
     bool moved = false;     ///< moving_streak reached min_hits once
