@@ -108,6 +108,7 @@ DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
   DynamicRegion region;
   region.label = seeds.label;
   region.points = seeds.points;
+  region.point_cells = seeds.point_cells;
   for (const Eigen::Vector3d& p : seeds.points_camera)
     region.points_world.push_back(T_world_camera * p);
   const Eigen::Vector3d box_min = seeds.box_min.array() - seeds.margin_m;
@@ -170,6 +171,8 @@ void MergeRegion(const DynamicRegion& from, DynamicRegion* into, cv::Mat* labels
   into->points.insert(into->points.end(), from.points.begin(), from.points.end());
   into->points_world.insert(into->points_world.end(), from.points_world.begin(),
                             from.points_world.end());
+  into->point_cells.insert(into->point_cells.end(), from.point_cells.begin(),
+                           from.point_cells.end());
   labels->setTo(into->label, *labels == from.label);
 }
 

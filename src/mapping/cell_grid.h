@@ -56,6 +56,7 @@ struct RegionSeeds {
   uint16_t label = 0;
   std::vector<int> cells;                      ///< seed cells (may repeat)
   std::vector<PointId> points;                 ///< the points of the cluster
+  std::vector<int> point_cells;                ///< each point's seed cell, -1 when none
   std::vector<Eigen::Vector3d> points_camera;  ///< [m] their positions, optical frame
   Eigen::Vector3d box_min, box_max;            ///< [m] box of the cluster's points, optical frame
   double margin_m = 0.0;                       ///< [m] how far the region may grow beyond the box

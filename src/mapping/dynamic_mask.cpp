@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include <Eigen/Geometry>
@@ -65,9 +66,11 @@ int FindRoot(std::vector<int>& parent, int i) {
   return i;
 }
 
-/// Single-linkage clusters of the points (indices into `points`), largest first.
-std::vector<std::vector<int>> ClusterPoints(const std::vector<MovingPoint>& points,
-                                            double distance_m, double margin_m, int min_points) {
+/// Single-linkage clusters of the points (indices into `points`) that `keep` accepts, largest
+/// first.
+std::vector<std::vector<int>> ClusterPoints(
+    const std::vector<MovingPoint>& points, double distance_m, double margin_m,
+    const std::function<bool(const std::vector<int>&)>& keep) {
   const int n = static_cast<int>(points.size());
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
@@ -87,9 +90,7 @@ std::vector<std::vector<int>> ClusterPoints(const std::vector<MovingPoint>& poin
   }
   MergeOverlappingClusters(points, margin_m, &clusters);
   clusters.erase(std::remove_if(clusters.begin(), clusters.end(),
-                                [&](const std::vector<int>& c) {
-                                  return static_cast<int>(c.size()) < min_points;
-                                }),
+                                [&](const std::vector<int>& c) { return !keep(c); }),
                  clusters.end());
   std::stable_sort(clusters.begin(), clusters.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });
@@ -135,6 +136,14 @@ double DynamicMask::MaskedShare() const {
 DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
                                const std::vector<ObservedPoint>& points,
                                const DynamicMaskConfig& config) {
+  return ComputeDynamicMask(frame, T_world_camera, points, config, {}, 0.0, 0);
+}
+
+DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
+                               const std::vector<ObservedPoint>& points,
+                               const DynamicMaskConfig& config,
+                               const std::vector<Eigen::Vector3d>& near_world, double near_m,
+                               int near_min_points) {
   const CellGrid grid(frame, config);
   DynamicMask mask;
   mask.decimation = config.decimation;
@@ -147,8 +156,21 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
     if (cell >= 0) blocked[cell] = 1;
   }
   const std::vector<MovingPoint> moving = MeasureUnmarkedPoints(grid, points);
-  for (const std::vector<int>& cluster : ClusterPoints(
-           moving, config.cluster_distance_m, config.margin_m, config.min_cluster_points)) {
+  std::vector<Eigen::Vector3d> near_camera;
+  for (const Eigen::Vector3d& p : near_world) near_camera.push_back(T_world_camera.inverse() * p);
+  const auto keep = [&](const std::vector<int>& cluster) {
+    const int n = static_cast<int>(cluster.size());
+    if (n >= config.min_cluster_points) return true;
+    if (n < near_min_points || near_camera.empty()) return false;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int i : cluster) mean += moving[i].p_camera / n;
+    for (const Eigen::Vector3d& p : near_camera) {
+      if ((p - mean).norm() <= near_m) return true;
+    }
+    return false;
+  };
+  for (const std::vector<int>& cluster :
+       ClusterPoints(moving, config.cluster_distance_m, config.margin_m, keep)) {
     RegionSeeds seeds;
     seeds.label = static_cast<uint16_t>(mask.regions.size() + 1);
     seeds.margin_m = config.margin_m;
@@ -159,6 +181,7 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
       seeds.box_max = seeds.box_max.cwiseMax(moving[i].p_camera);
       const int cell = SeedCell(grid, moving[i]);
       if (cell >= 0) seeds.cells.push_back(cell);
+      seeds.point_cells.push_back(cell);
       seeds.points.push_back(moving[i].id);
       seeds.points_camera.push_back(moving[i].p_camera);
     }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "dslam/core/depth_uncertainty.h"
+
 namespace dslam {
 namespace {
 
@@ -18,31 +20,46 @@ double MedianOf(std::vector<double> values) {
 
 /// Per-axis median velocity [m/s] of the region's points, each from its oldest position in
 /// `history` within `baseline_s` [s]; false when fewer than `min_points` points have one.
+/// `noise_rate` [1/s], when given, receives sqrt(sum of 1 / dt^2) / n over the n points and their
+/// baselines dt: a position sigma times it is the sigma of the points' mean velocity.
 bool RegionVelocity(const DynamicRegion& region, const std::deque<PointPositions>& history,
                     double stamp_s, double baseline_s, const ObjectsConfig& config,
-                    Eigen::Vector3d* velocity) {
+                    Eigen::Vector3d* velocity, double* noise_rate = nullptr) {
   std::vector<double> axes[3];
+  double rate2_sum = 0.0;
   for (size_t i = 0; i < region.points.size(); ++i) {
-    for (const PointPositions& before : history) {
-      const double dt_s = stamp_s - before.stamp_s;
-      if (dt_s > baseline_s || dt_s <= 0.0) continue;
-      const auto p = before.by_id.find(region.points[i]);
-      if (p == before.by_id.end()) continue;
-      const Eigen::Vector3d v = (region.points_world[i] - p->second) / dt_s;
-      // Faster: the point was matched to another thing's feature (an unmarked point follows its
-      // matches), not a motion.
-      if (v.norm() <= config.max_point_speed_mps) {
-        for (int a = 0; a < 3; ++a) axes[a].push_back(v[a]);
-      }
-      break;
+    Eigen::Vector3d v;
+    double dt_s = 0.0;
+    if (PointVelocity(region.points[i], region.points_world[i], history, stamp_s, baseline_s,
+                      config, &v, &dt_s)) {
+      for (int a = 0; a < 3; ++a) axes[a].push_back(v[a]);
+      rate2_sum += 1.0 / (dt_s * dt_s);
     }
   }
   if (static_cast<int>(axes[0].size()) < config.min_velocity_points) return false;
+  if (noise_rate != nullptr) *noise_rate = std::sqrt(rate2_sum) / axes[0].size();
   for (int a = 0; a < 3; ++a) (*velocity)[a] = MedianOf(axes[a]);
   return true;
 }
 
 }  // namespace
+
+bool PointVelocity(PointId id, const Eigen::Vector3d& p_world,
+                   const std::deque<PointPositions>& history, double stamp_s, double baseline_s,
+                   const ObjectsConfig& config, Eigen::Vector3d* velocity, double* dt_out) {
+  for (const PointPositions& before : history) {
+    const double dt_s = stamp_s - before.stamp_s;
+    if (dt_s > baseline_s || dt_s <= 0.0) continue;
+    const auto p = before.by_id.find(id);
+    if (p == before.by_id.end()) continue;
+    *velocity = (p_world - p->second) / dt_s;
+    if (dt_out != nullptr) *dt_out = dt_s;
+    // Faster: the point was matched to another thing's feature (an unmarked point follows its
+    // matches), not a motion.
+    return velocity->norm() <= config.max_point_speed_mps;
+  }
+  return false;
+}
 
 PointPositions PositionsOf(const DynamicMask& mask, double stamp_s) {
   PointPositions positions;
@@ -55,14 +72,20 @@ PointPositions PositionsOf(const DynamicMask& mask, double stamp_s) {
   return positions;
 }
 
-std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
-                                                    const ObjectsConfig& config, double stamp_s,
-                                                    const std::deque<PointPositions>& history) {
+std::vector<ObjectObservation> ObservationsFromMask(
+    const DynamicMask& mask, const ObjectsConfig& config, double stamp_s,
+    const std::deque<PointPositions>& history, const DepthNoiseConfig* noise,
+    const Eigen::Vector3d& camera_world, const std::vector<Eigen::Vector3d>& near_world) {
   std::vector<ObjectObservation> observations;
   for (const DynamicRegion& region : mask.regions) {
-    if (static_cast<int>(region.points.size()) < config.min_points) continue;
+    const int n = static_cast<int>(region.points.size());
+    const bool near = std::any_of(near_world.begin(), near_world.end(), [&](const auto& p) {
+      return (p - region.centroid_world).norm() <= config.gate_m;
+    });
+    if (n < config.min_points && !(near && n >= config.track_min_points)) continue;
     if (region.cells < config.min_cells) continue;
     ObjectObservation observation;
+    observation.weak = n < config.min_points;
     observation.centroid_world = region.centroid_world;
     observation.extent = region.max_world - region.min_world;
     observation.colour = region.mean_colour;
@@ -70,8 +93,16 @@ std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
     observation.has_velocity = RegionVelocity(region, history, stamp_s, config.velocity_baseline_s,
                                               config, &observation.velocity_world);
     Eigen::Vector3d motion;
-    if (RegionVelocity(region, history, stamp_s, config.motion_baseline_s, config, &motion)) {
+    double noise_rate = 0.0;
+    if (RegionVelocity(region, history, stamp_s, config.motion_baseline_s, config, &motion,
+                       &noise_rate)) {
       observation.motion_speed_mps = motion.norm();
+      if (noise != nullptr) {
+        // A point's velocity differs two depth measurements over its baseline (sqrt(2) sigma_d
+        // / dt); a median has about 1.2533 times the sigma of the mean.
+        const double sigma_d = DepthSigma((region.centroid_world - camera_world).norm(), *noise);
+        observation.motion_sigma_mps = 1.2533 * std::sqrt(2.0) * sigma_d * noise_rate;
+      }
     }
     observations.push_back(observation);
   }
@@ -90,6 +121,11 @@ void ObjectTracker::Predict(Track* track, double dt_s) const {
   Q.bottomRightCorner<3, 3>().diagonal().setConstant(q * dt_s * dt_s);
   track->x = F * track->x;
   track->P = F * track->P * F.transpose() + Q;
+}
+
+bool ObjectTracker::Moving(const ObjectObservation& observation) const {
+  return observation.motion_speed_mps >= config_.min_speed_mps &&
+         observation.motion_speed_mps >= config_.motion_sigma_factor * observation.motion_sigma_mps;
 }
 
 void ObjectTracker::Correct(Track* track, const ObjectObservation& observation,
@@ -112,9 +148,9 @@ void ObjectTracker::Correct(Track* track, const ObjectObservation& observation,
   track->P = 0.5 * (track->P + track->P.transpose()).eval();
   track->last = observation;
   track->last_seen_s = stamp_s;
+  if (!observation.weak) track->last_full_s = stamp_s;
   ++track->hits;
-  const bool moving = observation.motion_speed_mps >= config_.min_speed_mps;
-  track->moving_streak = moving ? track->moving_streak + 1 : 0;
+  track->moving_streak = Moving(observation) ? track->moving_streak + 1 : 0;
   if (track->moving_streak >= config_.min_hits) track->moved = true;
 }
 
@@ -131,9 +167,9 @@ ObjectTracker::Track ObjectTracker::StartTrack(const ObjectObservation& observat
       observation.has_velocity ? config_.velocity_sigma_mps : kInitialVelocitySigmaMps;
   track.P.bottomRightCorner<3, 3>().diagonal().setConstant(velocity_sigma * velocity_sigma);
   track.last = observation;
-  track.first_seen_s = track.last_seen_s = stamp_s;
+  track.first_seen_s = track.last_seen_s = track.last_full_s = stamp_s;
   track.hits = 1;
-  track.moving_streak = observation.motion_speed_mps >= config_.min_speed_mps ? 1 : 0;
+  track.moving_streak = Moving(observation) ? 1 : 0;
   track.moved = track.moving_streak >= config_.min_hits;
   return track;
 }
@@ -161,6 +197,18 @@ std::vector<int> ObjectTracker::Associate(
   return track_of;
 }
 
+std::vector<Eigen::Vector3d> ObjectTracker::PredictedPositions(double stamp_s) const {
+  std::vector<Eigen::Vector3d> predicted;
+  if (!has_stamp_ || !(stamp_s > last_stamp_s_) || stamp_s - last_stamp_s_ > config_.max_unseen_s) {
+    return predicted;
+  }
+  for (const Track& track : tracks_) {
+    if (!track.moved || stamp_s - track.last_full_s > config_.max_unseen_s) continue;
+    predicted.push_back(track.x.head<3>() + (stamp_s - last_stamp_s_) * track.x.tail<3>());
+  }
+  return predicted;
+}
+
 std::vector<TrackedObject> ObjectTracker::Update(
     double stamp_s, const std::vector<ObjectObservation>& observations) {
   if (has_stamp_ &&
@@ -175,13 +223,13 @@ std::vector<TrackedObject> ObjectTracker::Update(
   for (size_t o = 0; o < observations.size(); ++o) {
     if (track_of[o] >= 0) {
       Correct(&tracks_[track_of[o]], observations[o], stamp_s);
-    } else {
+    } else if (!observations[o].weak) {
       tracks_.push_back(StartTrack(observations[o], stamp_s));
     }
   }
   tracks_.erase(std::remove_if(
                     tracks_.begin(), tracks_.end(),
-                    [&](const Track& t) { return stamp_s - t.last_seen_s > config_.max_unseen_s; }),
+                    [&](const Track& t) { return stamp_s - t.last_full_s > config_.max_unseen_s; }),
                 tracks_.end());
   std::vector<TrackedObject> reported;
   for (const Track& track : tracks_) {

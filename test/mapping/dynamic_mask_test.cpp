@@ -145,5 +145,31 @@ TEST(DynamicMask, GrowthIntoATouchingFloorStopsAtTheMargin) {
   }
 }
 
+TEST(DynamicMask, SmallClustersAreKeptNearAPredictedObjectOnly) {
+  // Two movers with 2 unmarked points each (below min_cluster_points); one of them is where a
+  // tracked object is expected.
+  const cv::Rect a(80, 180, 60, 80), b(480, 180, 60, 80);  // 0.23 x 0.3 m: one cluster each
+  Scene scene = MakeScene({a, b}, {2.0f, 2.0f});
+  std::mt19937 rng(13);
+  std::vector<ObservedPoint> points;
+  AddPoints(a, 2, false, &rng, &points);
+  AddPoints(b, 2, false, &rng, &points);
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+  T_world_camera.translation() = Eigen::Vector3d(0.5, 0.0, 1.0);
+  const Eigen::Vector3d near_a =
+      T_world_camera * scene.frame.camera->BackProject({109.5, 219.5}, 2.0);
+  EXPECT_TRUE(
+      ComputeDynamicMask(scene.frame, T_world_camera, points, DynamicMaskConfig()).regions.empty());
+  const DynamicMask mask = ComputeDynamicMask(scene.frame, T_world_camera, points,
+                                              DynamicMaskConfig(), {near_a}, 0.6, 2);
+  ASSERT_EQ(mask.regions.size(), 1u);
+  EXPECT_GT(Recall(mask, a), 0.97);
+  EXPECT_EQ(Recall(mask, b), 0.0);
+  // Three points needed: none kept.
+  EXPECT_TRUE(
+      ComputeDynamicMask(scene.frame, T_world_camera, points, DynamicMaskConfig(), {near_a}, 0.6, 3)
+          .regions.empty());
+}
+
 }  // namespace
 }  // namespace dslam

@@ -2,6 +2,7 @@
 // centroid noise, crossing movers of different colours, gaps and stamps going backwards.
 #include "dslam/mapping/object_tracker.h"
 
+#include <cmath>
 #include <deque>
 #include <map>
 #include <random>
@@ -131,6 +132,23 @@ TEST(ObjectTracker, AThingWhosePointsNeverMoveIsNeverReported) {
   EXPECT_EQ(tracker.track_count(), 1);
 }
 
+TEST(ObjectTracker, PointSpeedsWithinTheirDepthNoiseAreNoMotion) {
+  // The same 0.3 m/s point speed, its depth-noise sigma 0.2 m/s (never reported) or 0.05 m/s
+  // (reported after min_hits observations).
+  for (const double sigma : {0.2, 0.05}) {
+    ObjectTracker tracker{ObjectsConfig()};
+    std::vector<TrackedObject> objects;
+    for (int i = 0; i < 30; ++i) {
+      ObjectObservation o =
+          Observe({1.0, 0.0, 4.0}, Eigen::Vector3d(0.5, 0.5, 0.5), Eigen::Vector3d(0.3, 0.0, 0.0));
+      o.motion_sigma_mps = sigma;
+      objects = tracker.Update(i / kFps, {o});
+      if (sigma < 0.1 && i + 1 >= ObjectsConfig().min_hits) EXPECT_EQ(objects.size(), 1u) << i;
+    }
+    EXPECT_EQ(objects.size(), sigma < 0.1 ? 1u : 0u);
+  }
+}
+
 TEST(ObjectTracker, AWalkerWhoStopsStaysReportedWithZeroVelocity) {
   ObjectTracker tracker{ObjectsConfig()};
   const Eigen::Vector3d grey(0.5, 0.5, 0.5);
@@ -143,6 +161,25 @@ TEST(ObjectTracker, AWalkerWhoStopsStaysReportedWithZeroVelocity) {
   }
   ASSERT_EQ(objects.size(), 1u);
   EXPECT_LT(objects[0].velocity_world.norm(), 0.05);
+}
+
+TEST(ObjectTracker, PredictedPositionsAreThoseOfMovedTracksAtTheStamp) {
+  ObjectTracker tracker{ObjectsConfig()};
+  const Eigen::Vector3d grey(0.5, 0.5, 0.5), v(1.0, 0.0, 0.0);
+  Eigen::Vector3d p(0.0, 0.0, 2.0);
+  EXPECT_TRUE(tracker.PredictedPositions(0.0).empty());
+  for (int i = 0; i < 30; ++i) {
+    p += v / kFps;
+    // A second thing that never moves is never predicted.
+    tracker.Update(i / kFps, {Observe(p, grey, v), Observe({3.0, 0.0, 2.0}, grey, {0, 0, 0})});
+  }
+  const double last = 29 / kFps;
+  const std::vector<Eigen::Vector3d> predicted = tracker.PredictedPositions(last + 0.1);
+  ASSERT_EQ(predicted.size(), 1u);
+  EXPECT_LT((predicted[0] - (p + 0.1 * v)).norm(), 0.02);
+  // A stamp that would clear the tracks predicts nothing.
+  EXPECT_TRUE(tracker.PredictedPositions(last).empty());
+  EXPECT_TRUE(tracker.PredictedPositions(last + ObjectsConfig().max_unseen_s + 0.1).empty());
 }
 
 TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps) {
@@ -165,6 +202,7 @@ TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps)
     history[1].by_id[k] = p_now - 0.2 * velocity;
     history[2].by_id[k] = p_now - velocity / kFps;
   }
+  region.centroid_world = Eigen::Vector3d(1.0, 2.0, 2.0);
   mask.regions = {region};
   const std::vector<ObjectObservation> observations =
       ObservationsFromMask(mask, config, 10.0, history);
@@ -172,6 +210,60 @@ TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps)
   ASSERT_TRUE(observations[0].has_velocity);
   EXPECT_LT((observations[0].velocity_world - velocity).norm(), 1e-9);
   EXPECT_NEAR(observations[0].motion_speed_mps, velocity.norm(), 1e-9);
+  EXPECT_EQ(observations[0].motion_sigma_mps, 0.0);  // no noise model given
+  // With the depth noise model and the camera 2 m from the centroid: sigma_d = 1.4e-3 * 2^2 +
+  // 1e-3 m; 9 points over 0.2 s; 1.2533 sqrt(2) sigma_d sqrt(9 / 0.2^2) / 9.
+  const DepthNoiseConfig noise;
+  const std::vector<ObjectObservation> with_noise =
+      ObservationsFromMask(mask, config, 10.0, history, &noise, Eigen::Vector3d(1.0, 2.0, 0.0));
+  ASSERT_EQ(with_noise.size(), 1u);
+  EXPECT_NEAR(with_noise[0].motion_sigma_mps,
+              1.2533 * std::sqrt(2.0) * 6.6e-3 * std::sqrt(9 / 0.04) / 9, 1e-9);
+}
+
+TEST(ObservationsFromMask, RegionsWithFewPointsNearAPredictedTrackAreWeakObservations) {
+  ObjectsConfig config;
+  DynamicMask mask;
+  DynamicRegion region;
+  region.points.assign(config.track_min_points, 0);
+  region.points_world.assign(config.track_min_points, Eigen::Vector3d::Zero());
+  region.cells = 100;
+  region.centroid_world = Eigen::Vector3d(1.0, 0.0, 2.0);
+  mask.regions = {region};
+  EXPECT_TRUE(ObservationsFromMask(mask, config, 0.0, {}).empty());
+  const Eigen::Vector3d far(1.0, 0.0, 2.0 + config.gate_m + 0.1);
+  EXPECT_TRUE(
+      ObservationsFromMask(mask, config, 0.0, {}, nullptr, Eigen::Vector3d::Zero(), {far}).empty());
+  const std::vector<ObjectObservation> near = ObservationsFromMask(
+      mask, config, 0.0, {}, nullptr, Eigen::Vector3d::Zero(), {Eigen::Vector3d(1.2, 0, 2)});
+  ASSERT_EQ(near.size(), 1u);
+  EXPECT_TRUE(near[0].weak);
+}
+
+TEST(ObjectTracker, WeakObservationsStartNoTrackAndKeepNoneAliveBeyondMaxUnseen) {
+  ObjectsConfig config;
+  ObjectTracker tracker{config};
+  const Eigen::Vector3d grey(0.5, 0.5, 0.5), v(1.0, 0.0, 0.0);
+  ObjectObservation weak = Observe({0.0, 0.0, 2.0}, grey, v);
+  weak.weak = true;
+  tracker.Update(0.0, {weak});
+  EXPECT_EQ(tracker.track_count(), 0);
+  Eigen::Vector3d p(0.0, 0.0, 2.0);
+  int i = 0;
+  for (; i < 10; ++i, p += v / kFps) tracker.Update(i / kFps, {Observe(p, grey, v)});
+  const double last_full = (i - 1) / kFps;
+  // Weak observations keep it reported for up to max_unseen_s after its last full one.
+  for (; i / kFps - last_full <= config.max_unseen_s - 0.01; ++i, p += v / kFps) {
+    ObjectObservation o = Observe(p, grey, v);
+    o.weak = true;
+    EXPECT_EQ(tracker.Update(i / kFps, {o}).size(), 1u) << i;
+  }
+  for (int k = 0; k < 5; ++k, ++i, p += v / kFps) {
+    ObjectObservation o = Observe(p, grey, v);
+    o.weak = true;
+    tracker.Update(i / kFps, {o});
+  }
+  EXPECT_EQ(tracker.track_count(), 0);
 }
 
 TEST(ObservationsFromMask, SmallRegionsAreLeftOut) {

@@ -55,6 +55,7 @@ struct ObjectsConfig {
   bool enabled = true;
   int min_points = 6;
   int min_cells = 20;
+  int track_min_points = 4;
   double gate_m = 0.6;
   double colour_weight_m = 0.3;
   double acceleration_sigma_mps2 = 3.0;
@@ -64,8 +65,13 @@ struct ObjectsConfig {
   double velocity_baseline_s = 0.034;
   double motion_baseline_s = 0.25;
   double max_point_speed_mps = 4.0;
+  double split_speed_mps = 0.5;
+  int split_min_points = 5;
+  double split_max_overlap = 0.5;
+  double split_min_distance_m = 0.4;
   int min_hits = 3;
   double min_speed_mps = 0.2;
+  double motion_sigma_factor = 3.0;
   double coast_s = 0.2;
   double max_unseen_s = 1.0;
 
@@ -76,6 +82,12 @@ struct ObjectsConfig {
       s.min_points);
     v(Field("min_cells", "-", 1, 1000000, "mask cells a region needs to become an observation"),
       s.min_cells);
+    // Where a tracked object is expected (its predicted position within gate_m), fewer unmarked
+    // points suffice, both for a cluster (instead of dynamic_mask.min_cluster_points) and for an
+    // observation (instead of min_points): the front end labels few points of a person at times.
+    v(Field("track_min_points", "-", 1, 10000,
+            "unmarked points a cluster or region near a tracked object needs"),
+      s.track_min_points);
     // Association cost = predicted-position distance + colour_weight_m * colour distance (0..1);
     // pairs costing more than gate_m are never associated.
     v(Field("gate_m", "m", 0.01, 10.0, "largest association cost"), s.gate_m);
@@ -105,12 +117,38 @@ struct ObjectsConfig {
     // re-matched on the wall behind: left out of the median.
     v(Field("max_point_speed_mps", "m/s", 0.01, 1000.0, "faster point velocities are outliers"),
       s.max_point_speed_mps);
+    // A region whose points' velocities (over motion_baseline_s) form two groups (two-means)
+    // whose per-axis medians differ by at least split_speed_mps, each group with at least
+    // split_min_points points, is split in two (dslam/mapping/region_split.h): two people that
+    // came close enough to be one cluster. A large split_speed_mps (e.g. 100) never splits.
+    v(Field("split_speed_mps", "m/s", 0.01, 1000.0,
+            "velocity difference of two groups of a region's points that splits it"),
+      s.split_speed_mps);
+    v(Field("split_min_points", "-", 1, 10000, "points with a velocity each split part needs"),
+      s.split_min_points);
+    // The two groups must also stand side by side in the image: the overlap of their horizontal
+    // ranges (10th-90th percentile of the optical x of their points) at most this share of the
+    // narrower range. A leg moving unlike the body above it overlaps the body's range.
+    v(Field("split_max_overlap", "-", 0.0, 1.0,
+            "largest horizontal overlap of two split groups (share of the narrower)"),
+      s.split_max_overlap);
+    // ... and their points' per-axis median positions at least split_min_distance_m apart (two
+    // people side by side are a body's width apart; parts of one near person are not).
+    v(Field("split_min_distance_m", "m", 0.0, 10.0,
+            "smallest distance of the median positions of two split groups"),
+      s.split_min_distance_m);
     // A track is reported once min_hits consecutive observations had a point velocity of at
     // least min_speed_mps: static surfaces mislabelled for a while are not objects. A walker that
     // stops stays reported (it moved before).
     v(Field("min_hits", "-", 1, 1000, "observations before a track is reported"), s.min_hits);
     v(Field("min_speed_mps", "m/s", 0.0, 100.0, "speed a track must reach to be reported"),
       s.min_speed_mps);
+    // ... and at least motion_sigma_factor times the speed's standard deviation expected from
+    // depth noise alone (features' depth_noise model at the region centroid's range, the points'
+    // baselines and count): far static surfaces with a few mislabelled points have noisy speeds.
+    v(Field("motion_sigma_factor", "-", 0.0, 100.0,
+            "speed a track must reach, in depth-noise sigmas of its point speed (0: no test)"),
+      s.motion_sigma_factor);
     // Short gaps (no observation: too few unmarked points in a frame) are bridged by the
     // filter's prediction.
     v(Field("coast_s", "s", 0.0, 60.0, "a reported track unseen for up to this is still reported"),

@@ -34,6 +34,8 @@ struct DynamicRegion {
   std::vector<PointId> points;  ///< the unmarked points that seeded it
   /// [m] those points measured in this frame (depth at their pixels), world frame; same order.
   std::vector<Eigen::Vector3d> points_world;
+  /// The mask cell each of those points seeded (index row * cols + col), -1 when none; same order.
+  std::vector<int> point_cells;
   int cells = 0;  ///< mask cells it covers
   /// [m] mean of its cells' back-projected points, world frame (the T_world_camera given).
   Eigen::Vector3d centroid_world = Eigen::Vector3d::Zero();
@@ -64,5 +66,15 @@ struct DynamicMask {
 DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
                                const std::vector<ObservedPoint>& points,
                                const DynamicMaskConfig& config);
+
+/// As above, and clusters with fewer than min_cluster_points points but at least
+/// `near_min_points` are kept when the mean of their points lies within `near_m` [m] of one of
+/// `near_world` [m, world frame] (where tracked moving objects are expected: a tracked person
+/// with few unmarked points in this frame).
+DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
+                               const std::vector<ObservedPoint>& points,
+                               const DynamicMaskConfig& config,
+                               const std::vector<Eigen::Vector3d>& near_world, double near_m,
+                               int near_min_points);
 
 }  // namespace dslam

@@ -1,6 +1,7 @@
 #pragma once
 // The moving objects of each frame, from its FrameResult: the dynamic mask (dynamic_mask.h) of
-// the frame's unmarked points, its regions as observations, and the tracker (object_tracker.h).
+// the frame's unmarked points, its regions split where two things move differently
+// (region_split.h), the regions as observations, and the tracker (object_tracker.h).
 // Runs on the thread that consumes FrameResults (the tracking thread of dslam_run_dataset, the
 // node's worker), after Slam::ProcessFrame.
 
@@ -38,6 +39,7 @@ class MovingObjectTracker {
  private:
   DynamicMaskConfig mask_config_;
   ObjectsConfig objects_config_;
+  DepthNoiseConfig depth_noise_;  ///< for the observations' motion_sigma_mps
   ObjectTracker tracker_;
   DynamicMask mask_;
   std::deque<PointPositions> history_;  ///< recent frames' unmarked points, oldest first

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "dslam/core/features_config.h"
 #include "dslam/core/objects_config.h"
 #include "dslam/mapping/dynamic_mask.h"
 
@@ -34,6 +35,13 @@ struct ObjectObservation {
   /// [m/s] speed of the same median over the longer ObjectsConfig::motion_baseline_s (whether
   /// it moves at all: depth noise averaged over more frames); 0 when not measured.
   double motion_speed_mps = 0.0;
+  /// [m/s] standard deviation of motion_speed_mps expected from depth noise alone (the depth
+  /// sigma at the centroid's range, the points' baselines and count); 0 when not known.
+  double motion_sigma_mps = 0.0;
+  /// Fewer than ObjectsConfig::min_points points (kept near a predicted track position): it
+  /// updates a track but starts none, and a track seen only in such observations for longer than
+  /// max_unseen_s is dropped.
+  bool weak = false;
 };
 
 /// World positions of the unmarked points of one frame, by id: the recent frames' positions, from
@@ -45,6 +53,14 @@ struct PointPositions {
 
 /// The positions of the points seeding `mask`'s regions, stamped `stamp_s` [s].
 PointPositions PositionsOf(const DynamicMask& mask, double stamp_s);
+
+/// Velocity [m/s, world frame] of point `id` at `p_world` [m] at `stamp_s` [s], from its oldest
+/// position in `history` (oldest first) at most `baseline_s` [s] old. False when no such position
+/// exists or the speed exceeds ObjectsConfig::max_point_speed_mps (a match to another thing's
+/// feature, not a motion).
+bool PointVelocity(PointId id, const Eigen::Vector3d& p_world,
+                   const std::deque<PointPositions>& history, double stamp_s, double baseline_s,
+                   const ObjectsConfig& config, Eigen::Vector3d* velocity, double* dt_s = nullptr);
 
 /// A tracked moving object as reported for one frame.
 struct TrackedObject {
@@ -59,9 +75,15 @@ struct TrackedObject {
 /// The observations of one frame stamped `stamp_s` [s]: the mask's regions with at least
 /// ObjectsConfig::min_points points and min_cells cells; their velocities from `history` (the
 /// recent frames' PositionsOf, oldest first; entries older than velocity_baseline_s are ignored).
-std::vector<ObjectObservation> ObservationsFromMask(const DynamicMask& mask,
-                                                    const ObjectsConfig& config, double stamp_s,
-                                                    const std::deque<PointPositions>& history);
+/// Regions whose centroid lies within gate_m of one of `near_world` [m, world frame] (predicted
+/// track positions) need only track_min_points points.
+/// With `noise` (the depth noise model) and `camera_world` (the camera's position [m], world
+/// frame), each observation's motion_sigma_mps is filled.
+std::vector<ObjectObservation> ObservationsFromMask(
+    const DynamicMask& mask, const ObjectsConfig& config, double stamp_s,
+    const std::deque<PointPositions>& history, const DepthNoiseConfig* noise = nullptr,
+    const Eigen::Vector3d& camera_world = Eigen::Vector3d::Zero(),
+    const std::vector<Eigen::Vector3d>& near_world = {});
 
 /// Tracks of moving objects over a sequence of frames (one thread).
 class ObjectTracker {
@@ -75,6 +97,11 @@ class ObjectTracker {
   std::vector<TrackedObject> Update(double stamp_s,
                                     const std::vector<ObjectObservation>& observations);
 
+  /// [m, world frame] positions at `stamp_s` [s] predicted by the constant-velocity filter of the
+  /// tracks that moved (reported or coasting) and were seen within max_unseen_s; empty when
+  /// Update(stamp_s, ...) would clear the tracks.
+  std::vector<Eigen::Vector3d> PredictedPositions(double stamp_s) const;
+
   /// Forgets every track (ids keep counting up).
   void Reset() { tracks_.clear(); }
 
@@ -87,12 +114,16 @@ class ObjectTracker {
     Eigen::Matrix<double, 6, 6> P = Eigen::Matrix<double, 6, 6>::Identity();
     ObjectObservation last;
     double first_seen_s = 0.0, last_seen_s = 0.0;
+    double last_full_s = 0.0;  ///< [s] last observation that was not weak
     int hits = 0;
     int moving_streak = 0;  ///< consecutive observations with a point velocity >= min_speed_mps
     bool moved = false;     ///< moving_streak reached min_hits once
   };
 
   void Predict(Track* track, double dt_s) const;
+  /// Whether the observation's points moved: motion_speed_mps at least min_speed_mps and at
+  /// least motion_sigma_factor times motion_sigma_mps.
+  bool Moving(const ObjectObservation& observation) const;
   void Correct(Track* track, const ObjectObservation& observation, double stamp_s) const;
   Track StartTrack(const ObjectObservation& observation, double stamp_s);
   /// Greedy association: for each observation, the index of its track or -1.
