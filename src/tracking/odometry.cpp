@@ -5,6 +5,7 @@
 
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
+#include "side_by_side.h"
 
 namespace dslam {
 
@@ -57,14 +58,25 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.matching_ms = stage.Restart();
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
-  const bool have_initial_pose =
-      SolvePose(&current, T_camera_world_predicted, static_cast<uint32_t>(result.frame_index));
+  //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
+  bool have_initial_pose = false;
+  RunSideBySide(
+      [&] {
+        have_initial_pose = SolvePose(&current, T_camera_world_predicted,
+                                      static_cast<uint32_t>(result.frame_index));
+      },
+      [&] {
+        if (config_.static_points.enabled) {
+          current.graph =
+              BuildFrontEndGraph(map_, current.matches, current.features, config_.static_points);
+        }
+      });
   result.times.initial_pose_ms = stage.Restart();
   if (!have_initial_pose) return Lost(&current, std::move(result), "too few pose inliers");
 
-  // 4. Front-end static point determination: Delaunay graph, inconsistent edge culling,
-  //    components, largest volume static (Sec. IV, V-A); the others lose their mark. Beside it,
-  //    more map points are matched by projection around the initial pose.
+  // 4. Front-end static point determination: Delaunay graph (built in step 3), inconsistent edge
+  //    culling, components, largest volume static (Sec. IV, V-A); the others lose their mark.
+  //    Beside it, more map points are matched by projection around the initial pose.
   RunFrontEndStaticPoints(&current, &result);
   result.times.static_points_ms = stage.Restart();
 

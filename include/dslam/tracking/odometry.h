@@ -69,6 +69,7 @@ class Odometry {
     std::vector<bool> excluded;  ///< per match: left out of the refined pose (isolated/dynamic)
     Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
     PoseResult pose;
+    FrontEndGraph graph;  ///< built beside the initial pose, used by the static points
     FrontEndStaticPoints static_points;
     bool from_robust_pose = false;
   };
