@@ -47,7 +47,8 @@ CorrelationInput BuildInput(const Map& map, const std::vector<PointMatch>& match
   return input;
 }
 
-// Indices into `usable` of the graph's points: all of them up to max_points; else every
+// Indices into `usable` of the graph's points: all of them up to max_points (or with
+// max_points <= 0: no cap); else every
 // unsettled point (unmarked, or a candidate not yet verified: where motion is still being
 // decided), thinned evenly over the image only if they alone exceed max_points, and verified
 // static points spread evenly over the image for the rest.
@@ -56,7 +57,7 @@ std::vector<int> GraphSubset(const Map& map, const std::vector<PointMatch>& matc
                              int max_points) {
   std::vector<int> all(usable.size());
   for (size_t u = 0; u < usable.size(); ++u) all[u] = static_cast<int>(u);
-  if (static_cast<int>(usable.size()) <= max_points) return all;
+  if (max_points <= 0 || static_cast<int>(usable.size()) <= max_points) return all;
   std::vector<int> groups[2];  // 0: unsettled, 1: verified static
   std::vector<Eigen::Vector2d> uv[2];
   for (size_t u = 0; u < usable.size(); ++u) {

@@ -49,7 +49,7 @@ FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& 
 /// frame (pose `T_camera_world`) and their measurements in `reference_frames` (keyframes and/or
 /// the previous frame, chosen by the caller), runs DetermineStaticPoints and returns the result.
 /// With fewer than config.min_graph_points such points nothing runs (`ran` stays false). With
-/// more than config.max_graph_points the graph is built over that many: every unsettled point
+/// more than config.max_graph_points (when > 0) the graph is built over that many: every unsettled point
 /// (unmarked, or a candidate) and verified static points spread evenly over the image for the
 /// rest (SpatiallyEvenSubset); the others follow in graph_match / result.labels with their
 /// nearest graph point's label (NearestGraphPoints, InheritedLabel) and have no edges.
