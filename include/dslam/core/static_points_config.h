@@ -60,8 +60,8 @@ struct StaticPointsConfig {
     // The Delaunay graph's cost grows faster than linearly with its points; above this count
     // the front end builds it over a subset (every unsettled point, verified static points spread
     // evenly over the image), and the points left out take the static/dynamic label of their
-    // nearest graph point (graph_subset.h). 0: no cap (default: 500 roughly halves the static room's
-    // determination time but changes the fragile walking trajectories; docs/readme/spd.md).
+    // nearest graph point (graph_subset.h). 0: no cap (default: 500 roughly halves the static
+    // room's determination time but changes the fragile walking trajectories; docs/readme/spd.md).
     v(Field("max_graph_points", "-", 0, 1000000,
             "front end: graph points at most (0: no cap); the rest take a neighbour's label"),
       s.max_graph_points);
