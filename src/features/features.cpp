@@ -20,7 +20,9 @@ cv::Mat ToGrey(const cv::Mat& colour) {
 }
 
 // rBRIEF descriptors of the keypoints of every level (level pixels), one cv::ORB call per level
-// on that level's image, levels in parallel; rows in the order of the levels and their keypoints.
+// on that level's image of the descriptor pyramid (BuildChainedPyramid: the images cv::ORB's own
+// pyramid has, so the descriptors are the ones a multi-level cv::ORB::compute gives), levels in
+// parallel; rows in the order of the levels and their keypoints.
 cv::Mat LevelDescriptors(const std::vector<cv::Mat>& levels,
                          const std::vector<std::vector<cv::KeyPoint>>& keypoints,
                          const FeaturesConfig& config) {
@@ -112,7 +114,7 @@ FrameFeatures ExtractFeatures(const RgbdFrame& frame, const FeaturesConfig& conf
   const std::vector<std::vector<cv::KeyPoint>> keypoints =
       orb::DetectLevelKeypoints(levels, config);
   FrameFeatures out;
-  out.descriptors = LevelDescriptors(levels, keypoints, config);
+  out.descriptors = LevelDescriptors(orb::BuildChainedPyramid(grey, config), keypoints, config);
   out.octave_scale = orb::LevelScales(config);
   const std::vector<cv::KeyPoint> level_zero = ToLevelZero(keypoints, out.octave_scale);
   out.features.resize(level_zero.size());

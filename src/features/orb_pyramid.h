@@ -1,6 +1,6 @@
 #pragma once
-// Internal to the features part: the image pyramid, FAST detection spread over grid cells and the
-// intensity-centroid orientation (the rule is described at the top of dslam/features/features.h).
+// Internal to the features part: the image pyramids, FAST detection spread over grid cells (the
+// rule is described at the top of dslam/features/features.h).
 
 #include <vector>
 
@@ -18,8 +18,14 @@ constexpr int kPatchRadius = 15;    ///< [px] ORB orientation / descriptor patch
 /// [-] scale_factor^l for every level l.
 std::vector<double> LevelScales(const FeaturesConfig& config);
 
-/// Level l is `grey` resized by 1 / scale_factor^l (level 0 shares `grey`'s pixels).
+/// Detection pyramid: level l is `grey` resized by 1 / scale_factor^l in one bilinear step
+/// (level 0 shares `grey`'s pixels); levels in parallel.
 std::vector<cv::Mat> BuildPyramid(const cv::Mat& grey, const FeaturesConfig& config);
+
+/// Descriptor pyramid: level l is level l - 1 resized by 1 / scale_factor (bilinear), as cv::ORB
+/// builds its own. One large bilinear step aliases the small levels; rBRIEF on such levels
+/// matched worse (the synthetic walking sequences lost track in 3 of 5 seeds).
+std::vector<cv::Mat> BuildChainedPyramid(const cv::Mat& grey, const FeaturesConfig& config);
 
 /// Keypoints of every level, in that level's pixel coordinates, with octave (= level), response
 /// (FAST score), size (31 px) and angle [deg] set; distributed by the grid rule. The result does

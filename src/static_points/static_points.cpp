@@ -1,6 +1,7 @@
 #include "dslam/static_points/static_points.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "dslam/core/stopwatch.h"
 
@@ -60,11 +61,19 @@ void RequireEvidenceAgainstStatic(const std::vector<GraphEdge>& edges,
 
 StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
                                          const StaticPointsConfig& config) {
+  const Stopwatch graph;
+  std::vector<GraphEdge> edges = BuildDelaunayGraph(input.points_world);
+  return DetermineStaticPoints(input, std::move(edges), graph.ElapsedMs(), config);
+}
+
+StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
+                                         std::vector<GraphEdge> edges, double graph_ms,
+                                         const StaticPointsConfig& config) {
   StaticPointsResult result;
   const Stopwatch total;
   Stopwatch stage;
-  result.edges = BuildDelaunayGraph(input.points_world);
-  result.stats.graph_ms = stage.Restart();
+  result.edges = std::move(edges);
+  result.stats.graph_ms = graph_ms;
 
   CullingResult culling = RunCulling(input, result.edges, config);
   result.edge_kept = std::move(culling.edge_kept);
@@ -101,7 +110,7 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
   }
   result.static_component = selection.static_component;
   result.stats.components_ms = stage.Restart();
-  result.stats.total_ms = total.ElapsedMs();
+  result.stats.total_ms = graph_ms + total.ElapsedMs();
 
   result.stats.points = num_points;
   result.stats.edges = static_cast<int>(result.edges.size());

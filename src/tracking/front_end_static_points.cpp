@@ -1,8 +1,11 @@
 #include "dslam/tracking/front_end_static_points.h"
 
 #include <algorithm>
+#include <utility>
 
+#include "dslam/core/stopwatch.h"
 #include "dslam/static_points/graph_subset.h"
+#include "dslam/static_points/point_graph.h"
 
 namespace dslam {
 namespace {
@@ -44,7 +47,8 @@ CorrelationInput BuildInput(const Map& map, const std::vector<PointMatch>& match
   return input;
 }
 
-// Indices into `usable` of the graph's points: all of them up to max_points; else every
+// Indices into `usable` of the graph's points: all of them up to max_points (or with
+// max_points <= 0: no cap); else every
 // unsettled point (unmarked, or a candidate not yet verified: where motion is still being
 // decided), thinned evenly over the image only if they alone exceed max_points, and verified
 // static points spread evenly over the image for the rest.
@@ -53,7 +57,7 @@ std::vector<int> GraphSubset(const Map& map, const std::vector<PointMatch>& matc
                              int max_points) {
   std::vector<int> all(usable.size());
   for (size_t u = 0; u < usable.size(); ++u) all[u] = static_cast<int>(u);
-  if (static_cast<int>(usable.size()) <= max_points) return all;
+  if (max_points <= 0 || static_cast<int>(usable.size()) <= max_points) return all;
   std::vector<int> groups[2];  // 0: unsettled, 1: verified static
   std::vector<Eigen::Vector2d> uv[2];
   for (size_t u = 0; u < usable.size(); ++u) {
@@ -100,28 +104,46 @@ void LabelLeftOutPoints(const Map& map, const std::vector<PointMatch>& matches,
 
 }  // namespace
 
+FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& matches,
+                                 const FrameFeatures& features, const StaticPointsConfig& config) {
+  const Stopwatch watch;
+  FrontEndGraph graph;
+  for (size_t m = 0; m < matches.size(); ++m) {
+    if (map.Find(matches[m].id) != nullptr && features.features[matches[m].feature].measurement) {
+      graph.usable.push_back(static_cast<int>(m));
+    }
+  }
+  if (static_cast<int>(graph.usable.size()) < config.min_graph_points) return graph;
+  graph.chosen = GraphSubset(map, matches, features, graph.usable, config.max_graph_points);
+  std::vector<Eigen::Vector3d> points_world;
+  for (int c : graph.chosen) points_world.push_back(map.Find(matches[graph.usable[c]].id)->p_world);
+  graph.edges = BuildDelaunayGraph(points_world);
+  graph.graph_ms = watch.ElapsedMs();
+  return graph;
+}
+
 FrontEndStaticPoints DetermineStaticPointsFrontEnd(
     const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
     const Eigen::Isometry3d& T_camera_world,
     const std::vector<const FrameMeasurements*>& reference_frames,
     const StaticPointsConfig& config) {
-  // The matches the graph can use: a map point with a depth measurement in this frame.
-  std::vector<int> usable;
-  for (size_t m = 0; m < matches.size(); ++m) {
-    if (map.Find(matches[m].id) != nullptr && features.features[matches[m].feature].measurement) {
-      usable.push_back(static_cast<int>(m));
-    }
-  }
+  return DetermineStaticPointsFrontEnd(map, matches, features, T_camera_world, reference_frames,
+                                       config, BuildFrontEndGraph(map, matches, features, config));
+}
+
+FrontEndStaticPoints DetermineStaticPointsFrontEnd(
+    const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
+    const Eigen::Isometry3d& T_camera_world,
+    const std::vector<const FrameMeasurements*>& reference_frames, const StaticPointsConfig& config,
+    FrontEndGraph graph) {
   FrontEndStaticPoints out;
-  if (static_cast<int>(usable.size()) < config.min_graph_points) return out;
-  const std::vector<int> chosen =
-      GraphSubset(map, matches, features, usable, config.max_graph_points);
-  for (int c : chosen) out.graph_match.push_back(usable[c]);
+  if (static_cast<int>(graph.usable.size()) < config.min_graph_points) return out;
+  for (int c : graph.chosen) out.graph_match.push_back(graph.usable[c]);
   const CorrelationInput input =
       BuildInput(map, matches, features, T_camera_world, reference_frames, out.graph_match);
-  out.result = DetermineStaticPoints(input, config);
+  out.result = DetermineStaticPoints(input, std::move(graph.edges), graph.graph_ms, config);
   out.ran = true;
-  LabelLeftOutPoints(map, matches, usable, chosen, &out);
+  LabelLeftOutPoints(map, matches, graph.usable, graph.chosen, &out);
   return out;
 }
 

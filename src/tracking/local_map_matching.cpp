@@ -10,9 +10,11 @@ namespace {
 
 // Pyramid level at which a point seen at `distance_m` should appear: its creation level shifted
 // by the change of apparent size (ORB-SLAM2's PredictScale); -1 when unknown.
-int PredictOctave(const MapPoint& point, double distance_m, const std::vector<double>& scales) {
+// `log_scale` is log(scales[1]).
+int PredictOctave(const MapPoint& point, double distance_m, const std::vector<double>& scales,
+                  double log_scale) {
   if (point.reference_distance_m <= 0.0 || scales.size() < 2) return -1;
-  const double shift = std::log(point.reference_distance_m / distance_m) / std::log(scales[1]);
+  const double shift = std::log(point.reference_distance_m / distance_m) / log_scale;
   const int octave = point.octave + static_cast<int>(std::lround(shift));
   return std::clamp(octave, 0, static_cast<int>(scales.size()) - 1);
 }
@@ -26,6 +28,10 @@ std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& cand
                                       std::vector<bool>* feature_taken) {
   std::vector<ProjectedPoint> projected;
   std::vector<PointId> projected_ids;
+  projected.reserve(candidates.size());
+  projected_ids.reserve(candidates.size());
+  const std::vector<double>& scales = features.octave_scale;
+  const double log_scale = scales.size() < 2 ? 0.0 : std::log(scales[1]);
   for (PointId id : candidates) {
     MapPoint* point = map->Find(id);
     if (point == nullptr) continue;
@@ -37,7 +43,7 @@ std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& cand
     ProjectedPoint candidate;
     candidate.uv_ideal = uv;
     candidate.descriptor = point->descriptor;
-    candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), features.octave_scale);
+    candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), scales, log_scale);
     projected.push_back(candidate);
     projected_ids.push_back(id);
   }

@@ -33,8 +33,13 @@ const KeyFrame& Map::AddKeyFrame(KeyFrame keyframe, int max_keyframes) {
 
 std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
                                       int static_seen_since_frame) const {
+  size_t bound = extra.size();
+  for (const KeyFrame& kf : keyframes_) bound += kf.points.size();
+  if (static_seen_since_frame >= 0) bound += points_.size();
   std::unordered_set<PointId> seen;
+  seen.reserve(bound);
   std::vector<PointId> local;
+  local.reserve(bound);
   auto add = [&](PointId id) {
     if (points_.count(id) && seen.insert(id).second) local.push_back(id);
   };

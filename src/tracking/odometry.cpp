@@ -5,6 +5,7 @@
 
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
+#include "side_by_side.h"
 
 namespace dslam {
 
@@ -39,13 +40,8 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   current.features = ExtractFeatures(frame, config_.features, config_.depth_noise);
   current.feature_taken.assign(current.features.features.size(), false);
   result.times.features_ms = stage.Restart();
-  const int num_features = static_cast<int>(current.features.features.size());
-  if (num_features < config_.tracking.min_static_inliers) {
-    // No pose can reach min_static_inliers inliers; say why instead of "too few pose inliers".
-    const std::string why = "too few features (" + std::to_string(num_features) +
-                            " ORB keypoints: black, saturated or textureless image?)";
-    return Lost(&current, std::move(result), why.c_str());
-  }
+  const std::string shortage = FeatureShortage(current.features);
+  if (!shortage.empty()) return Lost(&current, std::move(result), shortage.c_str());
   if (!initialised_) return Initialise(&current, std::move(result));
 
   // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
@@ -57,14 +53,15 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.matching_ms = stage.Restart();
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
+  //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
   const bool have_initial_pose =
-      SolvePose(&current, T_camera_world_predicted, static_cast<uint32_t>(result.frame_index));
+      SolveInitialPose(&current, T_camera_world_predicted, result.frame_index);
   result.times.initial_pose_ms = stage.Restart();
   if (!have_initial_pose) return Lost(&current, std::move(result), "too few pose inliers");
 
-  // 4. Front-end static point determination: Delaunay graph, inconsistent edge culling,
-  //    components, largest volume static (Sec. IV, V-A); the others lose their mark. Beside it,
-  //    more map points are matched by projection around the initial pose.
+  // 4. Front-end static point determination: Delaunay graph (built in step 3), inconsistent edge
+  //    culling, components, largest volume static (Sec. IV, V-A); the others lose their mark.
+  //    Beside it, more map points are matched by projection around the initial pose.
   RunFrontEndStaticPoints(&current, &result);
   result.times.static_points_ms = stage.Restart();
 
@@ -89,6 +86,29 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   Summarise(current, &result);
   result.times.total_ms = total.ElapsedMs();
   return result;
+}
+
+std::string Odometry::FeatureShortage(const FrameFeatures& features) const {
+  const int num_features = static_cast<int>(features.features.size());
+  if (num_features >= config_.tracking.min_static_inliers) return "";
+  // No pose can reach min_static_inliers inliers; say why instead of "too few pose inliers".
+  return "too few features (" + std::to_string(num_features) +
+         " ORB keypoints: black, saturated or textureless image?)";
+}
+
+bool Odometry::SolveInitialPose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
+                                int frame_index) {
+  bool have_pose = false;
+  RunSideBySide(
+      [&] {
+        have_pose = SolvePose(current, T_camera_world_guess, static_cast<uint32_t>(frame_index));
+      },
+      [&] {
+        if (!config_.static_points.enabled) return;
+        current->graph =
+            BuildFrontEndGraph(map_, current->matches, current->features, config_.static_points);
+      });
+  return have_pose;
 }
 
 bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {

@@ -1,36 +1,12 @@
 // The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
 #include <algorithm>
-#include <exception>
 #include <unordered_set>
-
-#include <opencv2/core/utility.hpp>
 
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/odometry.h"
+#include "side_by_side.h"
 
 namespace dslam {
-namespace {
-
-// Runs `first` and `second` in parallel on OpenCV's thread pool (one after the other with one
-// thread) and returns when both are done; an exception of either is rethrown here.
-template <typename First, typename Second>
-void RunSideBySide(First&& first, Second&& second) {
-  std::exception_ptr errors[2];
-  cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& range) {
-    for (int task = range.start; task < range.end; ++task) {
-      try {
-        task == 0 ? first() : second();
-      } catch (...) {
-        errors[task] = std::current_exception();
-      }
-    }
-  });
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
-}
-
-}  // namespace
 
 void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                    bool wide) {
@@ -150,7 +126,7 @@ void Odometry::DetermineFrontEndLabels(Current* current, FrameResult* result) {
   if (!config_.static_points.enabled) return;  // the static-world baseline
   current->static_points = DetermineStaticPointsFrontEnd(
       map_, current->matches, current->features, current->T_camera_world, FrontEndReferenceFrames(),
-      config_.static_points);
+      config_.static_points, std::move(current->graph));
   const TrackingConfig& cfg = config_.tracking;
   const LabelRules rules{cfg.isolated_frames_to_unmark, cfg.verify_frames, cfg.remark_frames};
   current->excluded = ApplyStaticLabels(current->static_points, current->matches, rules,

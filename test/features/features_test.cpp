@@ -120,29 +120,6 @@ TEST(Features, IntensityCentroidPointsUpTheGradient) {
                std::invalid_argument);
 }
 
-TEST(Features, NoTwoKeypointsAdjacentOnALevel) {
-  // Non-maximum suppression acts across grid cell borders too: no two keypoints of one level
-  // are 8-neighbours (a strongly textured frame, so that no cell needs the fallback threshold).
-  const RgbdFrame frame = test::TexturedFrame(test::TestCamera(), 4, 2.0);
-  const FeaturesConfig config;
-  const std::vector<cv::KeyPoint> kps = DetectDistributedKeypoints(frame.colour, config);
-  ASSERT_GT(kps.size(), 900u);
-  double scale = 1.0;
-  std::vector<std::vector<cv::Point>> per_level(config.num_levels);
-  for (const cv::KeyPoint& kp : kps) {
-    scale = std::pow(config.scale_factor, kp.octave);
-    per_level[kp.octave].emplace_back(cvRound(kp.pt.x / scale), cvRound(kp.pt.y / scale));
-  }
-  for (const auto& level : per_level) {
-    for (size_t i = 0; i < level.size(); ++i) {
-      for (size_t j = i + 1; j < level.size(); ++j) {
-        const cv::Point d = level[i] - level[j];
-        EXPECT_FALSE(std::abs(d.x) <= 1 && std::abs(d.y) <= 1) << level[i] << " " << level[j];
-      }
-    }
-  }
-}
-
 TEST(Features, DescriptorsFollowARotatedImage) {
   // rBRIEF is steered by the orientation: the features of an image turned by 90 degrees carry
   // nearly the same descriptors as the ones they came from.

@@ -21,7 +21,7 @@ struct StaticPointsConfig {
   double min_inlier_fraction = 1.0;
   int min_edge_measurements = 2;
   int min_graph_points = 8;
-  int max_graph_points = 500;
+  int max_graph_points = 0;
   int min_component_points = 4;
   int min_static_points = 10;
 
@@ -58,10 +58,12 @@ struct StaticPointsConfig {
             "fewer matched points with depth: the front end skips static point determination"),
       s.min_graph_points);
     // The Delaunay graph's cost grows faster than linearly with its points; above this count
-    // the front end builds it over a subset spread evenly over the image, and the points left
-    // out take the static/dynamic label of their nearest graph point (graph_subset.h).
-    v(Field("max_graph_points", "-", 4, 1000000,
-            "front end: more matched points are subsampled evenly over the image for the graph"),
+    // the front end builds it over a subset (every unsettled point, verified static points spread
+    // evenly over the image), and the points left out take the static/dynamic label of their
+    // nearest graph point (graph_subset.h). 0: no cap (default: 500 roughly halves the static
+    // room's determination time but changes the fragile walking trajectories; docs/readme/spd.md).
+    v(Field("max_graph_points", "-", 0, 1000000,
+            "front end: graph points at most (0: no cap); the rest take a neighbour's label"),
       s.max_graph_points);
     v(Field("min_component_points", "-", 1, 1000000,
             "smaller components are never chosen as static"),

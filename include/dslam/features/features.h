@@ -4,13 +4,13 @@
 // Distribution rule: an image pyramid of `num_levels` levels (each `scale_factor` smaller) gets a
 // share of `num_features` proportional to its area (ORB-SLAM2's geometric split, any shortfall
 // carried to the next level). Every level is cut into square cells of `cell_size_px`; FAST runs
-// once over all cells of a level with `fast_threshold` (non-maximum suppression across cell
-// borders), and again with `fast_threshold_min` in each cell where nothing was found. Cells then
-// hand out keypoints round-robin, strongest (FAST score) first: round k takes the k-th best
-// keypoint of every cell that still has one, until the level's share is reached (the last round
-// prefers the strongest). Orientation is the intensity centroid; rBRIEF descriptors come from
-// cv::ORB run on each level of the same pyramid. Levels are processed in parallel (OpenCV's
-// thread pool); the result does not depend on the thread count.
+// per cell with `fast_threshold`, and again with `fast_threshold_min` in cells where nothing was
+// found. Cells then hand out keypoints round-robin, strongest (FAST score) first: round k takes
+// the k-th best keypoint of every cell that still has one, until the level's share is reached (the
+// last round prefers the strongest). Orientation is the intensity centroid; rBRIEF descriptors
+// come from cv::ORB run on each level of a pyramid built like cv::ORB's own (each level from the
+// one before). Levels, cells' orientations, descriptors and depth measurements run in parallel
+// (OpenCV's thread pool); the result does not depend on the thread count.
 
 #include <optional>
 #include <vector>

@@ -61,4 +61,10 @@ void RequireEvidenceAgainstStatic(const std::vector<GraphEdge>& edges,
 StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
                                          const StaticPointsConfig& config);
 
+/// The same with the graph given: `edges` must be BuildDelaunayGraph(input.points_world)
+/// (built earlier, e.g. in parallel with other work); `graph_ms` [ms] is reported as its time.
+StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
+                                         std::vector<GraphEdge> edges, double graph_ms,
+                                         const StaticPointsConfig& config);
+
 }  // namespace dslam

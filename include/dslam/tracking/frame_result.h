@@ -67,13 +67,16 @@ struct BackEndThreadStatus {
 
 /// Wall-clock time of each stage [ms].
 struct StageTimes {
-  double features_ms = 0.0;       ///< ORB extraction and depth measurements
-  double matching_ms = 0.0;       ///< local-map projection and search
-  double initial_pose_ms = 0.0;   ///< motion-only BA with marked points (and RANSAC fallback)
-  double static_points_ms = 0.0;  ///< front-end static point determination
-  double refine_ms = 0.0;         ///< more matches and pose refinement with static points
-  double mapping_ms = 0.0;        ///< keyframe, new points, culling
-  double total_ms = 0.0;          ///< the whole ProcessFrame call
+  double features_ms = 0.0;  ///< ORB extraction and depth measurements
+  double matching_ms = 0.0;  ///< local-map projection and search
+  /// motion-only BA with marked points (and RANSAC fallback), with the static points' Delaunay
+  /// graph built beside it
+  double initial_pose_ms = 0.0;
+  /// front-end static point determination after the graph, with more matches searched beside it
+  double static_points_ms = 0.0;
+  double refine_ms = 0.0;   ///< pose refinement with static points
+  double mapping_ms = 0.0;  ///< keyframe, new points, culling
+  double total_ms = 0.0;    ///< the whole ProcessFrame call
   /// The calling (tracking) thread's time in Slam::ProcessFrame: waiting for the map lock, the
   /// front end and its bookkeeping, never the back end's local mapping (0 from Odometry alone).
   double tracking_ms = 0.0;

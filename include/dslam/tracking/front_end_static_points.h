@@ -30,11 +30,26 @@ struct FrontEndStaticPoints {
   bool ran = false;              ///< false when too few points had the needed measurements
 };
 
+/// The graph of the front end's determination: it needs the matches, not the frame's pose, so it
+/// can be built while the initial pose is solved.
+struct FrontEndGraph {
+  std::vector<int> usable;       ///< matches with a map point and a depth measurement
+  std::vector<int> chosen;       ///< indices into `usable`: the graph's points, increasing
+  std::vector<GraphEdge> edges;  ///< Delaunay graph over the chosen points' p_world
+  double graph_ms = 0.0;         ///< [ms] time to choose the points and build the graph
+};
+
+/// The graph over the usable matches (fewer than config.min_graph_points: no points, no edges);
+/// with more than config.max_graph_points, over the subset described at
+/// DetermineStaticPointsFrontEnd.
+FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& matches,
+                                 const FrameFeatures& features, const StaticPointsConfig& config);
+
 /// Builds the problem over the matched points with a depth measurement in the current
 /// frame (pose `T_camera_world`) and their measurements in `reference_frames` (keyframes and/or
 /// the previous frame, chosen by the caller), runs DetermineStaticPoints and returns the result.
 /// With fewer than config.min_graph_points such points nothing runs (`ran` stays false). With
-/// more than config.max_graph_points the graph is built over that many: every unsettled point
+/// more than config.max_graph_points (when > 0) the graph is built over that many: every unsettled point
 /// (unmarked, or a candidate) and verified static points spread evenly over the image for the
 /// rest (SpatiallyEvenSubset); the others follow in graph_match / result.labels with their
 /// nearest graph point's label (NearestGraphPoints, InheritedLabel) and have no edges.
@@ -43,6 +58,14 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
     const Eigen::Isometry3d& T_camera_world,
     const std::vector<const FrameMeasurements*>& reference_frames,
     const StaticPointsConfig& config);
+
+/// The same with the graph built beforehand by BuildFrontEndGraph on the same map, matches and
+/// features.
+FrontEndStaticPoints DetermineStaticPointsFrontEnd(
+    const Map& map, const std::vector<PointMatch>& matches, const FrameFeatures& features,
+    const Eigen::Isometry3d& T_camera_world,
+    const std::vector<const FrameMeasurements*>& reference_frames, const StaticPointsConfig& config,
+    FrontEndGraph graph);
 
 /// How labels turn into marks (from TrackingConfig).
 struct LabelRules {

@@ -3,6 +3,7 @@
 // points drive motion estimation, with front-end static point determination every frame.
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dslam/core/config.h"
@@ -69,6 +70,7 @@ class Odometry {
     std::vector<bool> excluded;  ///< per match: left out of the refined pose (isolated/dynamic)
     Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
     PoseResult pose;
+    FrontEndGraph graph;  ///< built beside the initial pose, used by the static points
     FrontEndStaticPoints static_points;
     bool from_robust_pose = false;
   };
@@ -91,6 +93,11 @@ class Odometry {
   /// success, current->T_camera_world. False: too few inliers either way.
   bool SolvePose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
                  uint32_t ransac_seed);
+  /// Why `features` cannot give a pose (fewer than min_static_inliers), or "" when they can.
+  std::string FeatureShortage(const FrameFeatures& features) const;
+  /// SolvePose and, beside it (in parallel), current->graph for the static points. False: no pose.
+  bool SolveInitialPose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
+                        int frame_index);
   /// RANSAC pose over the matches of `voters` (EstimateRobustPoseFromMatches).
   PoseResult RobustPose(const Current& current, PointSelection voters, uint32_t ransac_seed) const;
   bool EnoughInliers(const PoseResult& pose) const;  ///< success and >= min_static_inliers
