@@ -6,7 +6,6 @@
 #include <utility>
 
 #include <Eigen/LU>
-#include <opencv2/core/utility.hpp>
 
 #include "dslam/core/geometry.h"
 
@@ -49,23 +48,6 @@ void ForCommonFrames(const std::vector<std::pair<int, int>>& a,
   }
 }
 
-// z_ijk = y_ik - y_jk of edge `e` in the frame of `oi` and `oj`, with C_ijk^-1 (paper Eq.
-// meas_con_imp; plus the rotation uncertainty's part when the input has it).
-CorrelationMeasurement Measurement(const CorrelationInput& input, int e, const PointObservation& oi,
-                                   const PointObservation& oj) {
-  CorrelationMeasurement m;
-  m.edge = e;
-  m.frame = oi.frame;
-  m.z = oi.y_camera - oj.y_camera;
-  Eigen::Matrix3d covariance = oi.covariance + oj.covariance;
-  if (!input.rotation_covariance.empty()) {
-    covariance += Skew(m.z) * input.rotation_covariance[oi.frame] * Skew(m.z).transpose();
-  }
-  m.information = covariance.inverse();
-  m.R_camera_world = input.T_camera_world[oi.frame].linear();
-  return m;
-}
-
 }  // namespace
 
 std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& input,
@@ -76,28 +58,33 @@ std::vector<CorrelationMeasurement> BuildMeasurements(const CorrelationInput& in
   }
   const auto by_point = ObservationsByPoint(input);
   const int num_points = static_cast<int>(by_point.size());
-  // One pass counts each edge's measurements (its slots in the output), a second fills them,
-  // edges in parallel.
-  std::vector<size_t> first(edges.size() + 1, 0);
+  size_t count = 0;  // one pass to count, so that the vector is allocated once
   for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
     const GraphEdge& edge = edges[e];
     if (edge.i < 0 || edge.j >= num_points || edge.i >= edge.j) {
       throw std::invalid_argument("edge " + std::to_string(e) + " is not 0 <= i < j < N");
     }
-    size_t count = 0;
     ForCommonFrames(by_point[edge.i], by_point[edge.j], [&count](int, int) { ++count; });
-    first[e + 1] = first[e] + count;
   }
-  std::vector<CorrelationMeasurement> measurements(first.back());
-  cv::parallel_for_(cv::Range(0, static_cast<int>(edges.size())), [&](const cv::Range& range) {
-    for (int e = range.start; e < range.end; ++e) {
-      size_t slot = first[e];
-      ForCommonFrames(by_point[edges[e].i], by_point[edges[e].j], [&](int oi_index, int oj_index) {
-        measurements[slot++] =
-            Measurement(input, e, input.observations[oi_index], input.observations[oj_index]);
-      });
-    }
-  });
+  std::vector<CorrelationMeasurement> measurements;
+  measurements.reserve(count);
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    ForCommonFrames(by_point[edges[e].i], by_point[edges[e].j], [&](int oi_index, int oj_index) {
+      const PointObservation& oi = input.observations[oi_index];
+      const PointObservation& oj = input.observations[oj_index];
+      CorrelationMeasurement m;
+      m.edge = e;
+      m.frame = oi.frame;
+      m.z = oi.y_camera - oj.y_camera;
+      Eigen::Matrix3d covariance = oi.covariance + oj.covariance;
+      if (!input.rotation_covariance.empty()) {
+        covariance += Skew(m.z) * input.rotation_covariance[oi.frame] * Skew(m.z).transpose();
+      }
+      m.information = covariance.inverse();
+      m.R_camera_world = input.T_camera_world[oi.frame].linear();
+      measurements.push_back(m);
+    });
+  }
   return measurements;
 }
 

@@ -2,10 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <utility>
 
 #include <Eigen/LU>
-#include <opencv2/core/utility.hpp>
 
 #include "correlation_measurements.h"
 #include "dslam/static_points/correlation_problem.h"
@@ -59,44 +57,37 @@ double ChiSquareQuantile(int dof, double probability) {
 CullingResult DirectEdgeTest(const CorrelationInput& input, const std::vector<GraphEdge>& edges,
                              double probability) {
   const auto ms = internal::BuildMeasurements(input, edges);  // grouped by edge
-  // Each edge's run [begin, end) of measurements, and the thresholds for every count there is.
-  std::vector<std::pair<size_t, size_t>> runs;
-  size_t max_count = 0;
-  for (size_t first = 0; first < ms.size();) {
-    size_t last = first;
-    while (last < ms.size() && ms[last].edge == ms[first].edge) ++last;
-    runs.emplace_back(first, last);
-    max_count = std::max(max_count, last - first);
-    first = last;
-  }
-  std::vector<double> threshold_by_count(max_count + 1, 0.0);
-  for (size_t c = 2; c <= max_count; ++c) {
-    threshold_by_count[c] = ChiSquareQuantile(3 * (static_cast<int>(c) - 1), probability);
-  }
   CullingResult result;
+  result.edge_kept.assign(edges.size(), true);
   result.edge_measurements.assign(edges.size(), 0);
   result.edge_inliers.assign(edges.size(), 0);
   result.edge_max_chi2.assign(edges.size(), 0.0);
   result.measurements = static_cast<int>(ms.size());
-  std::vector<char> kept(edges.size(), 1);  // not vector<bool>: written from several threads
-  cv::parallel_for_(cv::Range(0, static_cast<int>(runs.size())), [&](const cv::Range& range) {
-    for (int r = range.start; r < range.end; ++r) {
-      const auto [first, last] = runs[r];
-      const int e = ms[first].edge;
-      const int count = static_cast<int>(last - first);
-      result.edge_measurements[e] = count;
-      result.edge_inliers[e] = count;
-      if (count < 2) continue;
-      result.edge_max_chi2[e] = EdgeStatistic(ms, first, last);
-      if (result.edge_max_chi2[e] > threshold_by_count[count]) {
-        kept[e] = 0;
+  std::vector<double> threshold_by_count;  // chi-square quantile per measurement count, cached
+  for (size_t first = 0; first < ms.size();) {
+    size_t last = first;
+    while (last < ms.size() && ms[last].edge == ms[first].edge) ++last;
+    const int e = ms[first].edge;
+    const int count = static_cast<int>(last - first);
+    result.edge_measurements[e] = count;
+    result.edge_inliers[e] = count;
+    if (count >= 2) {
+      const double chi2 = EdgeStatistic(ms, first, last);
+      result.edge_max_chi2[e] = chi2;
+      if (threshold_by_count.size() <= static_cast<size_t>(count)) {
+        const size_t old_size = threshold_by_count.size();
+        threshold_by_count.resize(count + 1);
+        for (size_t c = std::max<size_t>(old_size, 2); c <= static_cast<size_t>(count); ++c) {
+          threshold_by_count[c] = ChiSquareQuantile(3 * (static_cast<int>(c) - 1), probability);
+        }
+      }
+      if (chi2 > threshold_by_count[count]) {
+        result.edge_kept[e] = false;
         result.edge_inliers[e] = 0;
+        result.culled_measurements += count;
       }
     }
-  });
-  result.edge_kept.assign(kept.begin(), kept.end());
-  for (size_t e = 0; e < edges.size(); ++e) {
-    if (!kept[e]) result.culled_measurements += result.edge_measurements[e];
+    first = last;
   }
   return result;
 }
