@@ -20,7 +20,7 @@ cv::Mat ToGrey(const cv::Mat& colour) {
 }
 
 // rBRIEF descriptors of the keypoints of every level (level pixels), one cv::ORB call per level
-// on that level's image of the descriptor pyramid (BuildChainedPyramid: the images cv::ORB's own
+// on that level's image of the descriptor pyramid (Pyramids::descriptor: the images cv::ORB's own
 // pyramid has, so the descriptors are the ones a multi-level cv::ORB::compute gives), levels in
 // parallel; rows in the order of the levels and their keypoints.
 cv::Mat LevelDescriptors(const std::vector<cv::Mat>& levels,
@@ -101,7 +101,7 @@ int FrameFeatures::NumWithDepth() const {
 
 std::vector<cv::KeyPoint> DetectDistributedKeypoints(const cv::Mat& grey,
                                                      const FeaturesConfig& config) {
-  const std::vector<cv::Mat> levels = orb::BuildPyramid(grey, config);
+  const std::vector<cv::Mat> levels = orb::BuildPyramids(grey, config, false).detection;
   return ToLevelZero(orb::DetectLevelKeypoints(levels, config), orb::LevelScales(config));
 }
 
@@ -110,11 +110,11 @@ FrameFeatures ExtractFeatures(const RgbdFrame& frame, const FeaturesConfig& conf
   const std::string problem = frame.Check();
   if (!problem.empty()) throw std::invalid_argument("ExtractFeatures: " + problem);
   const cv::Mat grey = ToGrey(frame.colour);
-  const std::vector<cv::Mat> levels = orb::BuildPyramid(grey, config);
+  const orb::Pyramids pyramids = orb::BuildPyramids(grey, config, true);
   const std::vector<std::vector<cv::KeyPoint>> keypoints =
-      orb::DetectLevelKeypoints(levels, config);
+      orb::DetectLevelKeypoints(pyramids.detection, config);
   FrameFeatures out;
-  out.descriptors = LevelDescriptors(orb::BuildChainedPyramid(grey, config), keypoints, config);
+  out.descriptors = LevelDescriptors(pyramids.descriptor, keypoints, config);
   out.octave_scale = orb::LevelScales(config);
   const std::vector<cv::KeyPoint> level_zero = ToLevelZero(keypoints, out.octave_scale);
   out.features.resize(level_zero.size());

@@ -108,28 +108,34 @@ std::vector<double> LevelScales(const FeaturesConfig& config) {
   return scales;
 }
 
-std::vector<cv::Mat> BuildPyramid(const cv::Mat& grey, const FeaturesConfig& config) {
+Pyramids BuildPyramids(const cv::Mat& grey, const FeaturesConfig& config, bool with_descriptor) {
   const std::vector<double> scales = LevelScales(config);
-  std::vector<cv::Mat> levels(config.num_levels);
-  levels[0] = grey;
-  cv::parallel_for_(cv::Range(1, config.num_levels), [&](const cv::Range& range) {
-    for (int l = range.start; l < range.end; ++l) {
-      const cv::Size size(cvRound(grey.cols / scales[l]), cvRound(grey.rows / scales[l]));
-      cv::resize(grey, levels[l], size, 0, 0, cv::INTER_LINEAR_EXACT);
+  const int n = config.num_levels;
+  auto level_size = [&](int l) {
+    return cv::Size(cvRound(grey.cols / scales[l]), cvRound(grey.rows / scales[l]));
+  };
+  Pyramids out;
+  out.detection.resize(n);
+  out.detection[0] = grey;
+  if (with_descriptor) {
+    out.descriptor.resize(n);
+    out.descriptor[0] = grey;
+  }
+  // Job 0 builds the whole descriptor pyramid (its levels depend on each other; their resizes
+  // take about as long as the detection levels together), job l the detection level l.
+  cv::parallel_for_(cv::Range(0, n), [&](const cv::Range& range) {
+    for (int job = range.start; job < range.end; ++job) {
+      if (job > 0) {
+        cv::resize(grey, out.detection[job], level_size(job), 0, 0, cv::INTER_LINEAR_EXACT);
+        continue;
+      }
+      for (int l = 1; with_descriptor && l < n; ++l) {
+        cv::resize(out.descriptor[l - 1], out.descriptor[l], level_size(l), 0, 0,
+                   cv::INTER_LINEAR_EXACT);
+      }
     }
   });
-  return levels;
-}
-
-std::vector<cv::Mat> BuildChainedPyramid(const cv::Mat& grey, const FeaturesConfig& config) {
-  const std::vector<double> scales = LevelScales(config);
-  std::vector<cv::Mat> levels(config.num_levels);
-  levels[0] = grey;
-  for (int l = 1; l < config.num_levels; ++l) {
-    const cv::Size size(cvRound(grey.cols / scales[l]), cvRound(grey.rows / scales[l]));
-    cv::resize(levels[l - 1], levels[l], size, 0, 0, cv::INTER_LINEAR_EXACT);
-  }
-  return levels;
+  return out;
 }
 
 std::vector<std::vector<cv::KeyPoint>> DetectLevelKeypoints(const std::vector<cv::Mat>& levels,

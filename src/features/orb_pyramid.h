@@ -18,14 +18,19 @@ constexpr int kPatchRadius = 15;    ///< [px] ORB orientation / descriptor patch
 /// [-] scale_factor^l for every level l.
 std::vector<double> LevelScales(const FeaturesConfig& config);
 
-/// Detection pyramid: level l is `grey` resized by 1 / scale_factor^l in one bilinear step
-/// (level 0 shares `grey`'s pixels); levels in parallel.
-std::vector<cv::Mat> BuildPyramid(const cv::Mat& grey, const FeaturesConfig& config);
+/// The two pyramids of `grey` (level 0 of both shares its pixels).
+struct Pyramids {
+  /// Detection: level l is `grey` resized by 1 / scale_factor^l in one bilinear step.
+  std::vector<cv::Mat> detection;
+  /// Descriptors: level l is level l - 1 resized by 1 / scale_factor (bilinear), as cv::ORB
+  /// builds its own. One large bilinear step aliases the small levels; rBRIEF on such levels
+  /// matched worse (the synthetic walking sequences lost track in 3 of 5 seeds). Empty unless
+  /// asked for.
+  std::vector<cv::Mat> descriptor;
+};
 
-/// Descriptor pyramid: level l is level l - 1 resized by 1 / scale_factor (bilinear), as cv::ORB
-/// builds its own. One large bilinear step aliases the small levels; rBRIEF on such levels
-/// matched worse (the synthetic walking sequences lost track in 3 of 5 seeds).
-std::vector<cv::Mat> BuildChainedPyramid(const cv::Mat& grey, const FeaturesConfig& config);
+/// Both pyramids (the descriptor one only `with_descriptor`), built in parallel.
+Pyramids BuildPyramids(const cv::Mat& grey, const FeaturesConfig& config, bool with_descriptor);
 
 /// Keypoints of every level, in that level's pixel coordinates, with octave (= level), response
 /// (FAST score), size (31 px) and angle [deg] set; distributed by the grid rule. The result does
