@@ -20,27 +20,28 @@ void AddObservation(int point, int frame, const Eigen::Vector3d& y, const Eigen:
   input->observations.push_back(obs);
 }
 
-// The correlation problem over the matches `graph_match`: frame 0 is the current frame, frame
-// k + 1 reference_frames[k].
-CorrelationInput BuildInput(const Map& map, const std::vector<PointMatch>& matches,
-                            const FrameFeatures& features, const Eigen::Isometry3d& T_camera_world,
+// The correlation problem over the matches `graph_match` with map points at `points_world`
+// (parallel): frame 0 is the current frame, frame k + 1 reference_frames[k].
+CorrelationInput BuildInput(const std::vector<PointMatch>& matches, const FrameFeatures& features,
+                            const Eigen::Isometry3d& T_camera_world,
                             const std::vector<const FrameMeasurements*>& reference_frames,
-                            const std::vector<int>& graph_match) {
+                            const std::vector<int>& graph_match,
+                            std::vector<Eigen::Vector3d> points_world) {
   CorrelationInput input;
   input.T_camera_world.push_back(T_camera_world);
   for (const FrameMeasurements* frame : reference_frames) {
     input.T_camera_world.push_back(frame->T_camera_world);
   }
-  for (int m : graph_match) {
-    const MapPoint* point = map.Find(matches[m].id);
-    const PointMeasurement& measurement = *features.features[matches[m].feature].measurement;
-    const int index = static_cast<int>(input.points_world.size());
-    input.points_world.push_back(point->p_world);
-    AddObservation(index, 0, measurement.y_camera, measurement.covariance, &input);
+  input.points_world = std::move(points_world);
+  for (size_t index = 0; index < graph_match.size(); ++index) {
+    const PointMatch& match = matches[graph_match[index]];
+    const PointMeasurement& measurement = *features.features[match.feature].measurement;
+    const int point = static_cast<int>(index);
+    AddObservation(point, 0, measurement.y_camera, measurement.covariance, &input);
     for (size_t k = 0; k < reference_frames.size(); ++k) {
-      const auto found = reference_frames[k]->by_point.find(point->id);
+      const auto found = reference_frames[k]->by_point.find(match.id);
       if (found == reference_frames[k]->by_point.end()) continue;
-      AddObservation(index, static_cast<int>(k) + 1, found->second.y_camera,
+      AddObservation(point, static_cast<int>(k) + 1, found->second.y_camera,
                      found->second.covariance, &input);
     }
   }
@@ -48,10 +49,9 @@ CorrelationInput BuildInput(const Map& map, const std::vector<PointMatch>& match
 }
 
 // Indices into `usable` of the graph's points: all of them up to max_points (or with
-// max_points <= 0: no cap); else every
-// unsettled point (unmarked, or a candidate not yet verified: where motion is still being
-// decided), thinned evenly over the image only if they alone exceed max_points, and verified
-// static points spread evenly over the image for the rest.
+// max_points <= 0: no cap); else every unsettled point (unmarked, or a candidate not yet
+// verified: where motion is still being decided), thinned evenly over the image only if they
+// alone exceed max_points, and verified static points spread evenly over the image for the rest.
 std::vector<int> GraphSubset(const Map& map, const std::vector<PointMatch>& matches,
                              const FrameFeatures& features, const std::vector<int>& usable,
                              int max_points) {
@@ -92,8 +92,7 @@ void LabelLeftOutPoints(const Map& map, const std::vector<PointMatch>& matches,
     left_out_world.push_back(map.Find(matches[usable[u]].id)->p_world);
   }
   StaticPointsResult& result = out->result;
-  const std::vector<Eigen::Vector3d> graph_points = result.points_world;
-  const std::vector<int> nearest = NearestGraphPoints(graph_points, left_out_world);
+  const std::vector<int> nearest = NearestGraphPoints(result.points_world, left_out_world);
   for (size_t k = 0; k < left_out.size(); ++k) {
     out->graph_match.push_back(left_out[k]);
     result.labels.push_back(InheritedLabel(result.labels[nearest[k]]));
@@ -115,9 +114,10 @@ FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& 
   }
   if (static_cast<int>(graph.usable.size()) < config.min_graph_points) return graph;
   graph.chosen = GraphSubset(map, matches, features, graph.usable, config.max_graph_points);
-  std::vector<Eigen::Vector3d> points_world;
-  for (int c : graph.chosen) points_world.push_back(map.Find(matches[graph.usable[c]].id)->p_world);
-  graph.edges = BuildDelaunayGraph(points_world);
+  for (int c : graph.chosen) {
+    graph.points_world.push_back(map.Find(matches[graph.usable[c]].id)->p_world);
+  }
+  graph.edges = BuildDelaunayGraph(graph.points_world);
   graph.graph_ms = watch.ElapsedMs();
   return graph;
 }
@@ -139,8 +139,8 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
   FrontEndStaticPoints out;
   if (static_cast<int>(graph.usable.size()) < config.min_graph_points) return out;
   for (int c : graph.chosen) out.graph_match.push_back(graph.usable[c]);
-  const CorrelationInput input =
-      BuildInput(map, matches, features, T_camera_world, reference_frames, out.graph_match);
+  const CorrelationInput input = BuildInput(matches, features, T_camera_world, reference_frames,
+                                            out.graph_match, std::move(graph.points_world));
   out.result = DetermineStaticPoints(input, std::move(graph.edges), graph.graph_ms, config);
   out.ran = true;
   LabelLeftOutPoints(map, matches, graph.usable, graph.chosen, &out);

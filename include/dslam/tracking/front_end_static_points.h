@@ -33,10 +33,11 @@ struct FrontEndStaticPoints {
 /// The graph of the front end's determination: it needs the matches, not the frame's pose, so it
 /// can be built while the initial pose is solved.
 struct FrontEndGraph {
-  std::vector<int> usable;       ///< matches with a map point and a depth measurement
-  std::vector<int> chosen;       ///< indices into `usable`: the graph's points, increasing
-  std::vector<GraphEdge> edges;  ///< Delaunay graph over the chosen points' p_world
-  double graph_ms = 0.0;         ///< [ms] time to choose the points and build the graph
+  std::vector<int> usable;  ///< matches with a map point and a depth measurement
+  std::vector<int> chosen;  ///< indices into `usable`: the graph's points, increasing
+  std::vector<Eigen::Vector3d> points_world;  ///< [m] p_world of the chosen points, in order
+  std::vector<GraphEdge> edges;               ///< Delaunay graph over points_world
+  double graph_ms = 0.0;  ///< [ms] time to choose the points and build the graph
 };
 
 /// The graph over the usable matches (fewer than config.min_graph_points: no points, no edges);
@@ -49,8 +50,8 @@ FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& 
 /// frame (pose `T_camera_world`) and their measurements in `reference_frames` (keyframes and/or
 /// the previous frame, chosen by the caller), runs DetermineStaticPoints and returns the result.
 /// With fewer than config.min_graph_points such points nothing runs (`ran` stays false). With
-/// more than config.max_graph_points (when > 0) the graph is built over that many: every unsettled point
-/// (unmarked, or a candidate) and verified static points spread evenly over the image for the
+/// more than config.max_graph_points (when > 0) the graph is built over that many: every unsettled
+/// point (unmarked, or a candidate) and verified static points spread evenly over the image for the
 /// rest (SpatiallyEvenSubset); the others follow in graph_match / result.labels with their
 /// nearest graph point's label (NearestGraphPoints, InheritedLabel) and have no edges.
 FrontEndStaticPoints DetermineStaticPointsFrontEnd(
