@@ -120,16 +120,10 @@ DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
     label[cell] = seeds.label;
     queue.push_back(cell);
   }
-  Eigen::Vector3d sum_world = Eigen::Vector3d::Zero(), sum_colour = Eigen::Vector3d::Zero();
-  region.min_world = Eigen::Vector3d::Constant(1e300);
-  region.max_world = Eigen::Vector3d::Constant(-1e300);
+  RegionStatistics statistics;
   for (size_t head = 0; head < queue.size(); ++head) {
     const int cell = queue[head];
-    const Eigen::Vector3d p_world = T_world_camera * grid.CellPoint(cell);
-    sum_world += p_world;
-    sum_colour += grid.CellColour(cell);
-    region.min_world = region.min_world.cwiseMin(p_world);
-    region.max_world = region.max_world.cwiseMax(p_world);
+    statistics.Add(T_world_camera * grid.CellPoint(cell), grid.CellColour(cell));
     const int r = cell / grid.cols(), c = cell % grid.cols();
     const int neighbours[4][2] = {{r - 1, c}, {r + 1, c}, {r, c - 1}, {r, c + 1}};
     for (const auto& rc : neighbours) {
@@ -150,12 +144,26 @@ DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
       queue.push_back(next);
     }
   }
-  region.cells = static_cast<int>(queue.size());
-  if (region.cells > 0) {
-    region.centroid_world = sum_world / region.cells;
-    region.mean_colour = sum_colour / region.cells;
-  }
+  statistics.WriteTo(&region);
   return region;
+}
+
+void RegionStatistics::Add(const Eigen::Vector3d& p_world, const Eigen::Vector3d& colour) {
+  ++cells_;
+  sum_world_ += p_world;
+  sum_colour_ += colour;
+  min_world_ = min_world_.cwiseMin(p_world);
+  max_world_ = max_world_.cwiseMax(p_world);
+}
+
+void RegionStatistics::WriteTo(DynamicRegion* region) const {
+  region->cells = cells_;
+  region->min_world = min_world_;
+  region->max_world = max_world_;
+  if (cells_ > 0) {
+    region->centroid_world = sum_world_ / cells_;
+    region->mean_colour = sum_colour_ / cells_;
+  }
 }
 
 void MergeRegion(const DynamicRegion& from, DynamicRegion* into, cv::Mat* labels) {

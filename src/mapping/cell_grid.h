@@ -62,6 +62,21 @@ struct RegionSeeds {
   double margin_m = 0.0;                       ///< [m] how far the region may grow beyond the box
 };
 
+/// Sums of a region's cells, giving its cell count, centroid, box and mean colour.
+class RegionStatistics {
+ public:
+  /// Adds one cell at `p_world` [m] with `colour`.
+  void Add(const Eigen::Vector3d& p_world, const Eigen::Vector3d& colour);
+  /// Writes cells, box and, with at least one cell, centroid and mean colour into `region`.
+  void WriteTo(DynamicRegion* region) const;
+
+ private:
+  int cells_ = 0;
+  Eigen::Vector3d sum_world_ = Eigen::Vector3d::Zero(), sum_colour_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d min_world_ = Eigen::Vector3d::Constant(1e300);
+  Eigen::Vector3d max_world_ = Eigen::Vector3d::Constant(-1e300);
+};
+
 /// Grows one region (breadth first, 4-neighbours, depth-continuous, within margin_m of the
 /// seeds' box, never into `blocked` cells or cells already labelled) and writes its label into
 /// `labels`; returns its statistics in the world frame of `T_world_camera`. `touched` receives

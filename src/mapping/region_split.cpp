@@ -95,23 +95,12 @@ void ShareCells(const std::vector<int>& seeds0, const std::vector<int>& seeds1, 
 void RecomputeStatistics(const CellGrid& grid, const cv::Mat& labels,
                          const Eigen::Isometry3d& T_world_camera, DynamicRegion* region) {
   const auto* label = labels.ptr<uint16_t>();
-  Eigen::Vector3d sum_world = Eigen::Vector3d::Zero(), sum_colour = Eigen::Vector3d::Zero();
-  region->min_world = Eigen::Vector3d::Constant(1e300);
-  region->max_world = Eigen::Vector3d::Constant(-1e300);
-  region->cells = 0;
+  RegionStatistics statistics;
   for (int cell = 0; cell < grid.size(); ++cell) {
     if (label[cell] != region->label) continue;
-    const Eigen::Vector3d p_world = T_world_camera * grid.CellPoint(cell);
-    sum_world += p_world;
-    sum_colour += grid.CellColour(cell);
-    region->min_world = region->min_world.cwiseMin(p_world);
-    region->max_world = region->max_world.cwiseMax(p_world);
-    ++region->cells;
+    statistics.Add(T_world_camera * grid.CellPoint(cell), grid.CellColour(cell));
   }
-  if (region->cells > 0) {
-    region->centroid_world = sum_world / region->cells;
-    region->mean_colour = sum_colour / region->cells;
-  }
+  statistics.WriteTo(region);
 }
 
 /// [m] the 10th and 90th percentiles of `values`.
