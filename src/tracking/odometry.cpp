@@ -5,6 +5,7 @@
 
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
+#include "dslam/tracking/relocalisation.h"
 #include "side_by_side.h"
 
 namespace dslam {
@@ -42,7 +43,9 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.features_ms = stage.Restart();
   const std::string shortage = FeatureShortage(current.features);
   if (!shortage.empty()) return Lost(&current, std::move(result), shortage.c_str());
-  if (!initialised_) return Initialise(&current, std::move(result));
+  // After lost_frames_before_reset lost frames the map is re-initialised, unless this frame can
+  // still be relocalised in it (step 3): e.g. a covered lens, a long gap in the input.
+  if (!initialised_ && !CanRelocalise()) return Initialise(&current, std::move(result));
 
   // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
   const double max_gap_s = config_.tracking.max_prediction_gap_s;
@@ -54,10 +57,12 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
   //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
+  //    When that fails (a jump the prediction missed): relocalise by descriptors.
   const bool have_initial_pose =
-      SolveInitialPose(&current, T_camera_world_predicted, result.frame_index);
+      SolveInitialPose(&current, T_camera_world_predicted, result.frame_index) ||
+      Relocalise(&current, result.frame_index);
   result.times.initial_pose_ms = stage.Restart();
-  if (!have_initial_pose) return Lost(&current, std::move(result), "too few pose inliers");
+  if (!have_initial_pose) return Untracked(&current, std::move(result), "too few pose inliers");
 
   // 4. Front-end static point determination: Delaunay graph (built in step 3), inconsistent edge
   //    culling, components, largest volume static (Sec. IV, V-A); the others lose their mark.
@@ -68,7 +73,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   // 5. The pose from static points only.
   const bool tracked = RefinePoseWithStaticPoints(&current, &result);
   result.times.refine_ms = stage.Restart();
-  if (!tracked) return Lost(&current, std::move(result), "too few static inliers");
+  if (!tracked) return Untracked(&current, std::move(result), "too few static inliers");
 
   // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
   UpdateMatchedPoints(current);
@@ -79,6 +84,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.mapping_ms = stage.Restart();
 
   lost_frames_ = 0;
+  initialised_ = true;
   result.has_pose = true;
   result.T_world_camera = current.T_camera_world.inverse();
   result.information = current.pose.information;
@@ -109,6 +115,45 @@ bool Odometry::SolveInitialPose(Current* current, const Eigen::Isometry3d& T_cam
             BuildFrontEndGraph(map_, current->matches, current->features, config_.static_points);
       });
   return have_pose;
+}
+
+bool Odometry::CanRelocalise() const {
+  return config_.tracking.relocalisation && !map_.keyframes().empty();
+}
+
+FrameResult Odometry::Untracked(Current* current, FrameResult result, const char* why) {
+  if (initialised_) return Lost(current, std::move(result), why);
+  current->matches.clear();  // points of the map that Initialise replaces
+  return Initialise(current, std::move(result));
+}
+
+bool Odometry::Relocalise(Current* current, int frame_index) {
+  const TrackingConfig& cfg = config_.tracking;
+  if (!cfg.relocalisation) return false;
+  const DescriptorMatchRules rules{cfg.relocalisation_max_distance_bits, cfg.relocalisation_ratio};
+  const std::vector<PointMatch> by_descriptor =
+      MatchByDescriptor(map_, WindowMarkedPoints(map_), current->features, rules);
+  const uint32_t seed = static_cast<uint32_t>(frame_index) + 2u;  // SolvePose uses +0 and +1
+  const PoseResult found =
+      EstimateRobustPoseFromMatches(map_, by_descriptor, current->features, *current->frame->camera,
+                                    PointSelection::kMarked, config_, seed);
+  // A pose that only a minority of the matches agree with is one group's among several (e.g.
+  // people not yet unmarked): no relocalisation then.
+  if (!EnoughInliers(found) ||
+      found.num_inliers < cfg.relocalisation_min_inlier_share * by_descriptor.size()) {
+    return false;
+  }
+  // The local map around the found pose, as if it had been predicted (its points were counted
+  // visible at the failed prediction already).
+  current->feature_taken.assign(current->features.features.size(), false);
+  current->matches =
+      MatchLocalMap(&map_, current->local_points, current->features, *current->frame->camera,
+                    found.T_camera_world, cfg.search_radius_px, cfg.search_min_depth_m, false,
+                    &current->feature_taken);
+  if (!SolveInitialPose(current, found.T_camera_world, frame_index)) return false;
+  current->relocalisation_inliers = found.num_inliers;
+  current->relocalisation_matches = static_cast<int>(by_descriptor.size());
+  return true;
 }
 
 bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {

@@ -1,5 +1,6 @@
 // The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
 #include <algorithm>
+#include <string>
 #include <unordered_set>
 
 #include "dslam/tracking/map_point_creation.h"
@@ -142,7 +143,14 @@ bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result)
                  static_cast<uint32_t>(result->frame_index) + 1u)) {
     return false;
   }
-  result->state = current->from_robust_pose ? TrackingState::kRecovered : TrackingState::kTracking;
+  const bool relocalised = current->relocalisation_inliers > 0;
+  result->state = current->from_robust_pose || relocalised ? TrackingState::kRecovered
+                                                           : TrackingState::kTracking;
+  if (relocalised) {
+    result->message = "relocalised by descriptors against the window's keyframes (" +
+                      std::to_string(current->relocalisation_inliers) + " of " +
+                      std::to_string(current->relocalisation_matches) + " matches agree)";
+  }
   return true;
 }
 

@@ -1,7 +1,14 @@
 // The odometry's resets (ResetMode), time going backwards, long gaps between frames and the
-// per-frame lists a caller asks for, on a short static_room sequence rendered in-process.
+// per-frame lists a caller asks for, on a short static_room sequence rendered in-process, and
+// relocalisation after a jump on fast_rotation.
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "dslam/synth/scenario.h"
+#include "dslam/synth/sequence.h"
 #include "dslam/tracking/odometry.h"
 #include "support/rendered_sequence.h"
 
@@ -82,6 +89,89 @@ TEST(OdometryReset, LongGapPredictsTheLastPose) {
   const FrameResult result = odometry.ProcessFrame(late);
   ASSERT_TRUE(result.has_pose);
   EXPECT_LT(PositionError(result, 21, 0), 0.01);
+}
+
+// fast_rotation (turning at up to 60 deg/s), seed 1: frames 0-19, and frame 31.
+struct Turning {
+  std::vector<synth::SyntheticFrame> first;
+  synth::SyntheticFrame later;
+};
+
+const Turning& TurningFrames() {
+  static const Turning turning = [] {
+    const synth::SyntheticSequence sequence(synth::MakeScenario("fast_rotation", 1));
+    Turning out;
+    for (int i = 0; i < 20; ++i) out.first.push_back(sequence.RenderFrame(i));
+    out.later = sequence.RenderFrame(31);
+    return out;
+  }();
+  return turning;
+}
+
+// Feeds frames 0-19 of TurningFrames to `odometry` (all tracked).
+void TrackFirstFrames(Odometry* odometry) {
+  for (const synth::SyntheticFrame& frame : TurningFrames().first) {
+    ASSERT_TRUE(odometry->ProcessFrame(frame.frame).has_pose);
+  }
+}
+
+// The pose of `result` is TurningFrames().later's (in the world of frame 0): < 1 cm, < 0.5 deg.
+void ExpectAtLaterFrame(const FrameResult& result) {
+  const Turning& turning = TurningFrames();
+  const Eigen::Isometry3d truth =
+      turning.first[0].T_world_camera.inverse() * turning.later.T_world_camera;
+  EXPECT_LT((result.T_world_camera.translation() - truth.translation()).norm(), 0.01);
+  const Eigen::AngleAxisd error(result.T_world_camera.linear().transpose() * truth.linear());
+  EXPECT_LT(error.angle(), 0.5 * M_PI / 180.0);
+}
+
+Config WithoutRelocalisation() {
+  Config config;
+  config.tracking.relocalisation = false;
+  return config;
+}
+
+// A jump the motion model cannot predict: frames 20-30 never arrive, the stamps say 1/30 s
+// passed. The projection search around the prediction fails; relocalisation by descriptors
+// against the window's keyframes finds the pose.
+TEST(OdometryReset, RelocalisesAfterAnUnpredictedJump) {
+  Odometry on{Config()}, off{WithoutRelocalisation()};
+  TrackFirstFrames(&on);
+  TrackFirstFrames(&off);
+  RgbdFrame jumped = TurningFrames().later.frame;
+  jumped.stamp_s = TurningFrames().first.back().frame.stamp_s + 1.0 / 30.0;
+  const FrameResult without = off.ProcessFrame(jumped);
+  EXPECT_EQ(without.state, TrackingState::kLost);  // the case relocalisation is for
+  const FrameResult with = on.ProcessFrame(jumped);
+  ASSERT_TRUE(with.has_pose) << with.message;
+  EXPECT_EQ(with.state, TrackingState::kRecovered);
+  EXPECT_NE(with.message.find("relocalised"), std::string::npos) << with.message;
+  ExpectAtLaterFrame(with);
+}
+
+// A covered lens: frames 20-30 are black without depth, more than lost_frames_before_reset
+// (10). Without relocalisation frame 31 re-initialises the map at frame 19's pose; with it, frame
+// 31 is relocalised in the map kept since.
+TEST(OdometryReset, RelocalisesInTheKeptMapAfterACoveredLens) {
+  Odometry on{Config()}, off{WithoutRelocalisation()};
+  TrackFirstFrames(&on);
+  TrackFirstFrames(&off);
+  const RgbdFrame& last = TurningFrames().first.back().frame;
+  for (int k = 1; k <= 11; ++k) {
+    RgbdFrame black = last;
+    black.colour = cv::Mat::zeros(last.colour.size(), last.colour.type());
+    black.depth_m = cv::Mat::zeros(last.depth_m.size(), CV_32FC1);
+    black.stamp_s = last.stamp_s + k / 30.0;
+    EXPECT_EQ(off.ProcessFrame(black).state, TrackingState::kLost);
+    EXPECT_EQ(on.ProcessFrame(black).state, TrackingState::kLost);
+  }
+  const FrameResult without = off.ProcessFrame(TurningFrames().later.frame);
+  EXPECT_EQ(without.state, TrackingState::kInitialised);
+  EXPECT_FALSE(without.has_pose);
+  const FrameResult with = on.ProcessFrame(TurningFrames().later.frame);
+  ASSERT_TRUE(with.has_pose) << with.message;
+  EXPECT_EQ(with.state, TrackingState::kRecovered);
+  ExpectAtLaterFrame(with);
 }
 
 TEST(OdometryReset, ListsOnlyWhenAskedAndTheSamePoses) {

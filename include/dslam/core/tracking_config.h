@@ -37,6 +37,10 @@ struct TrackingConfig {
   int lost_frames_before_reset = 10;
   double max_prediction_gap_s = 1.0;
   std::string robust_pose_points = "marked_first";
+  bool relocalisation = true;
+  int relocalisation_max_distance_bits = 64;
+  double relocalisation_ratio = 0.8;
+  double relocalisation_min_inlier_share = 0.5;
 
   /// Visits every field in documentation order.
   template <typename Self, typename Visitor>
@@ -135,7 +139,8 @@ struct TrackingConfig {
             "static frames in a row an unmarked point needs (its dynamic frames, at most this)"),
       s.remark_frames);
     v(Field("lost_frames_before_reset", "frames", 1, 100000,
-            "consecutive lost frames before re-initialising at the last good pose"),
+            "consecutive lost frames before re-initialising at the last good pose (with "
+            "relocalisation: at the first later frame that cannot be relocalised)"),
       s.lost_frames_before_reset);
     // After a longer gap (dropped frames, a paused driver) the last velocity says nothing about
     // where the camera is now: predict the last pose and search wide instead of extrapolating.
@@ -149,6 +154,22 @@ struct TrackingConfig {
     v(Choice("robust_pose_points", {"all", "marked", "marked_first"},
              "matches the RANSAC pose fallback samples: all, marked only, or marked then all"),
       s.robust_pose_points);
+    // When the pose prediction fails (relocalisation.h): no prediction needed, marked points only.
+    v(Flag("relocalisation",
+           "when tracking fails, match the frame by descriptor against the window's marked "
+           "points and take a RANSAC pose from them"),
+      s.relocalisation);
+    v(Field("relocalisation_max_distance_bits", "bits", 1, 256,
+            "a relocalisation descriptor match must be nearer than this (Hamming, of 256)"),
+      s.relocalisation_max_distance_bits);
+    v(Field("relocalisation_ratio", "-", 0.01, 1.0,
+            "and nearer than this x the second nearest descriptor"),
+      s.relocalisation_ratio);
+    // Measured (BENCHMARKS.md): true relocalisations after dropped frames 0.94-0.95; poses of
+    // people not yet unmarked on Bonn crowd 0.27, on walking_halfsphere 0.39.
+    v(Field("relocalisation_min_inlier_share", "-", 0.0, 1.0,
+            "a relocalised pose needs at least this share of the descriptor matches as inliers"),
+      s.relocalisation_min_inlier_share);
   }
 };
 

@@ -17,7 +17,7 @@ namespace dslam {
 enum class TrackingState {
   kInitialised,  ///< first frame (or first after a reset): map created, pose = last known pose
   kTracking,     ///< pose from static points of the local map
-  kRecovered,    ///< static points too few; pose from a robust RANSAC over all matches
+  kRecovered,    ///< pose from a RANSAC (static points too few) or relocalised by descriptors
   kLost,         ///< no trustworthy pose: none is reported
 };
 

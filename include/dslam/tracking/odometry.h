@@ -73,6 +73,8 @@ class Odometry {
     FrontEndGraph graph;  ///< built beside the initial pose, used by the static points
     FrontEndStaticPoints static_points;
     bool from_robust_pose = false;
+    int relocalisation_inliers = 0;  ///< > 0: the pose came from Relocalise (its RANSAC inliers)
+    int relocalisation_matches = 0;  ///< the descriptor matches that RANSAC sampled
   };
 
   bool BeginFrame(const RgbdFrame& frame, FrameResult* result);
@@ -98,6 +100,16 @@ class Odometry {
   /// SolvePose and, beside it (in parallel), current->graph for the static points. False: no pose.
   bool SolveInitialPose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
                         int frame_index);
+  /// After SolveInitialPose failed (relocalisation.h): descriptor matches against the window's
+  /// marked points, a RANSAC pose from them and, around it, the local map searched again and
+  /// SolveInitialPose. Replaces current->matches. False: off, too few inliers, or fewer than
+  /// relocalisation_min_inlier_share of the descriptor matches.
+  bool Relocalise(Current* current, int frame_index);
+  /// Whether relocalisation is on and there is a map to relocalise in.
+  bool CanRelocalise() const;
+  /// A frame whose pose failed (`why`): lost while the map is initialised; after
+  /// lost_frames_before_reset lost frames (initialised_ false), the map re-initialised from it.
+  FrameResult Untracked(Current* current, FrameResult result, const char* why);
   /// RANSAC pose over the matches of `voters` (EstimateRobustPoseFromMatches).
   PoseResult RobustPose(const Current& current, PointSelection voters, uint32_t ransac_seed) const;
   bool EnoughInliers(const PoseResult& pose) const;  ///< success and >= min_static_inliers
