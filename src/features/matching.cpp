@@ -14,17 +14,6 @@ namespace {
 
 constexpr int kDescriptorBytes = 32;
 
-int Hamming(const uchar* a, const uchar* b) {
-  int bits = 0;
-  for (int i = 0; i < kDescriptorBytes; i += 8) {
-    std::uint64_t x, y;
-    std::memcpy(&x, a + i, 8);
-    std::memcpy(&y, b + i, 8);
-    bits += __builtin_popcountll(x ^ y);
-  }
-  return bits;
-}
-
 // Keeps, for every train index claimed by several queries, only the closest; others get -1.
 void ResolveConflicts(const std::vector<int>& distances, int num_train, std::vector<int>* match) {
   std::vector<int> owner(num_train, -1);
@@ -110,6 +99,17 @@ int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const Fea
 }
 
 }  // namespace
+
+int Hamming(const uchar* a, const uchar* b) {
+  int bits = 0;
+  for (int i = 0; i < kDescriptorBytes; i += 8) {
+    std::uint64_t x, y;
+    std::memcpy(&x, a + i, 8);
+    std::memcpy(&y, b + i, 8);
+    bits += __builtin_popcountll(x ^ y);
+  }
+  return bits;
+}
 
 int HammingDistance(const cv::Mat& a, const cv::Mat& b) {
   if (a.type() != CV_8UC1 || b.type() != CV_8UC1 || a.total() != kDescriptorBytes ||

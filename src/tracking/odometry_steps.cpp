@@ -209,9 +209,21 @@ void Odometry::FuseStaticPoints(const Current& current) {
   }
 }
 
+void Odometry::RefineDescriptors(const Current& current) {
+  const int keep = config_.tracking.descriptor_observations;
+  if (keep <= 1) return;
+  for (size_t m = 0; m < current.matches.size(); ++m) {
+    if (!current.pose.inliers[m] || (!current.excluded.empty() && current.excluded[m])) continue;
+    MapPoint* point = map_.Find(current.matches[m].id);
+    if (point == nullptr) continue;
+    RefineDescriptor(point, current.features.descriptors.row(current.matches[m].feature), keep);
+  }
+}
+
 int Odometry::MakeKeyFrame(const Current& current) {
   const TrackingConfig& cfg = config_.tracking;
   if (cfg.fuse_static_points) FuseStaticPoints(current);
+  RefineDescriptors(current);
   const int frame_index = frame_index_ - 1;
   const std::vector<int> dynamic = config_.static_points.enabled
                                        ? DynamicNeighbourhood(current.features, current.matches,

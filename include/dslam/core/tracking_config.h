@@ -26,6 +26,7 @@ struct TrackingConfig {
   double keyframe_min_tracked_ratio = 0.7;
   int keyframe_min_static = 150;
   int max_new_points = 400;
+  int descriptor_observations = 1;
   bool fuse_static_points = false;
   double dynamic_neighbour_radius_px = 40.0;
   double cull_min_found_ratio = 0.25;
@@ -105,6 +106,13 @@ struct TrackingConfig {
   template <typename Self, typename Visitor>
   static void PointFields(Self& s, Visitor& v) {
     v(Field("max_new_points", "-", 0, 100000, "map points created per keyframe"), s.max_new_points);
+    // A point seen from many viewpoints can be matched with the descriptor most like its others
+    // (RefineDescriptor, map.h) instead of the one it was created with. Off by default: with 8,
+    // Bonn crowd ATE 0.054 -> 0.237 m, walking_halfsphere +31 % (BENCHMARKS.md).
+    v(Field("descriptor_observations", "-", 1, 1000,
+            "keyframe descriptors a map point keeps to choose its descriptor from (1: the "
+            "creating one only)"),
+      s.descriptor_observations);
     // The fusion is an information-weighted mean (the paper refines marked points by bundle
     // adjustment). Off by default: on Bonn crowd it raised ATE from 0.10 to 0.24 m (people that
     // stood still, were verified and fused, then walked off), on synthetic walking it gained 3 mm.

@@ -13,6 +13,8 @@ namespace dslam {
 
 /// Hamming distance [bits, 0..256] between two 32-byte ORB descriptors (1x32 CV_8UC1 rows).
 int HammingDistance(const cv::Mat& a, const cv::Mat& b);
+/// The same on the descriptors' 32 bytes at `a` and `b` (no checks; for inner loops).
+int Hamming(const uchar* a, const uchar* b);
 
 /// A map point projected into the current frame.
 struct ProjectedPoint {

@@ -125,6 +125,9 @@ class Odometry {
   int StaticSeenSinceFrame() const;
   int MakeKeyFrame(const Current& current);
   void FuseStaticPoints(const Current& current);
+  /// The keyframe's pose inliers (not excluded) add their descriptors to their points
+  /// (RefineDescriptor, tracking.descriptor_observations).
+  void RefineDescriptors(const Current& current);
   FrameMeasurements MeasurementsOf(const Current& current,
                                    const std::vector<PointId>& created) const;
   FrameResult Lost(Current* current, FrameResult result, const char* why);
