@@ -1,0 +1,68 @@
+#pragma once
+// Depth-change seeds of the dynamic mask: where the depth of a frame came clearly nearer than what
+// recent frames saw along the same ray, something is there that was not there then (a person
+// walking in front of the wall). These seeds find moving things whose sparse points the front end
+// still marks (the first frames of a run, far people), which the unmarked points cannot seed.
+//
+// Prediction source: the recent frames themselves, not the static voxel map. A DepthReference
+// keeps the depth of one frame every DynamicMaskConfig::depth_change_interval_s (the newest
+// depth_change_references), each reduced to the mask's cells as a DepthView (free_space.h: per
+// block of decimation x decimation pixels the nearest depth of its 3x3 blocks, so depth edges
+// and pose errors of a pixel or two give occlusion, not a change). The voxel map is not used: it
+// is fused on the back-end thread from keyframes leaving Slam's window (seconds late, empty in
+// the first frames where the seeds matter most) and contains the people the unmarked points did
+// not mask. A reference that saw a person where the person still is gives no vote; one that saw
+// the wall where the person now stands does.
+//
+// Cost per frame (tracking thread): adding a reference reads the frame's depth once and erodes
+// the blocks (every depth_change_interval_s only); testing a frame projects the valid, unlabelled,
+// unblocked cells on every depth_change_stride-th row and column (at most 80 x 60 of the 160 x 120
+// cells at 640 x 480, decimation 4, stride 2) into each reference until one sees through it (at
+// most depth_change_references projections per cell). Measured by scripts/mapping_benchmark.py
+// (run summaries' median_objects_ms: mask and tracking per frame, a shared, loaded machine):
+// walking seed 1 0.95 ms without the seeds, 1.48 ms with them; static_room seed 1 0.14 and
+// 0.54 ms (its p95 0.20 and 4.60 ms: the frames that add a reference).
+
+#include <deque>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dslam/core/features_config.h"
+#include "dslam/core/objects_config.h"
+#include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/free_space.h"
+
+namespace dslam {
+
+/// Recent frames' depth with their poses: what was seen before, for the depth-change test.
+class DepthReference {
+ public:
+  /// Uses the depth_change_* fields and decimation of `mask` and the depth noise model `noise`
+  /// (sigma_d, min_depth_m).
+  DepthReference(const DynamicMaskConfig& mask, const DepthNoiseConfig& noise);
+
+  /// Keeps `frame` (pose `T_world_camera`: optical frame -> world) stamped `stamp_s` [s] as a
+  /// reference when no reference was kept within depth_change_interval_s before it; drops the
+  /// oldest beyond depth_change_references. A stamp before the newest reference clears them first.
+  void Add(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, double stamp_s);
+
+  /// Whether some reference saw clearly beyond `p_world` [m, world frame], a point measured at
+  /// depth `depth_m` [m] in the current frame: every depth of the reference around the point's
+  /// pixel lies beyond it by more than depth_change_margin_m + depth_change_sigma_factor *
+  /// sigma_d(depth_m).
+  bool Changed(const Eigen::Vector3d& p_world, double depth_m) const;
+
+  bool empty() const { return views_.empty(); }
+  int size() const { return static_cast<int>(views_.size()); }  ///< references kept
+  void Clear() { views_.clear(); }
+
+ private:
+  DynamicMaskConfig mask_;
+  DepthNoiseConfig noise_;
+  std::deque<DepthView> views_;  ///< oldest first
+  double last_stamp_s_ = 0.0;    ///< [s] of the newest reference
+};
+
+}  // namespace dslam
