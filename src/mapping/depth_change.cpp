@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_set>
 
 #include "cell_grid.h"
@@ -13,6 +14,25 @@ namespace {
 /// [s] stamps closer than this to a full interval count as a full interval (30 Hz stamps are not
 /// exact multiples of the interval).
 constexpr double kStampTolerance_s = 1e-3;
+
+/// Per block of `block_px` x `block_px` pixels of `depth_m` (CV_32FC1 [m]) the depth of its
+/// centre pixel (the pixel CellGrid gives its cells; the last pixel row or column for a partial
+/// block) when it is at least `min_depth_m`, infinity otherwise (NaN, infinity, 0: none).
+cv::Mat CentreDepths(const cv::Mat& depth_m, int block_px, double min_depth_m) {
+  const float inf = std::numeric_limits<float>::infinity();
+  cv::Mat blocks((depth_m.rows + block_px - 1) / block_px, (depth_m.cols + block_px - 1) / block_px,
+                 CV_32FC1);
+  const int half = block_px / 2;
+  for (int r = 0; r < blocks.rows; ++r) {
+    const float* row = depth_m.ptr<float>(std::min(r * block_px + half, depth_m.rows - 1));
+    float* out = blocks.ptr<float>(r);
+    for (int c = 0; c < blocks.cols; ++c) {
+      const float d = row[std::min(c * block_px + half, depth_m.cols - 1)];
+      out[c] = (d >= min_depth_m && d < inf) ? d : inf;
+    }
+  }
+  return blocks;
+}
 
 /// The cells of `grid` on every `stride`-th row and column that are neither labelled nor
 /// blocked, have a depth and are changed against `reference` (1); all others 0.
@@ -117,7 +137,8 @@ void DepthReference::Add(const RgbdFrame& frame, const Eigen::Isometry3d& T_worl
       stamp_s - last_stamp_s_ < mask_.depth_change_interval_s - kStampTolerance_s) {
     return;
   }
-  views_.emplace_back(frame, T_world_camera, mask_.decimation, noise_.min_depth_m);
+  views_.emplace_back(frame.camera, T_world_camera, mask_.decimation,
+                      CentreDepths(frame.depth_m, mask_.decimation, noise_.min_depth_m));
   last_stamp_s_ = stamp_s;
   while (static_cast<int>(views_.size()) > mask_.depth_change_references) views_.pop_front();
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -18,26 +19,41 @@ FreeSpaceTolerance FreeSpaceTolerance::From(const MapConfig& config, double min_
   return tolerance;
 }
 
-DepthView::DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
-                     double min_depth_m)
-    : camera_(frame.camera), block_px_(block_px) {
-  set_pose(T_world_camera);
-  const cv::Mat& depth = frame.depth_m;
+namespace {
+
+/// Per block of `block_px` x `block_px` pixels of `depth_m` the nearest depth [m] of at least
+/// `min_depth_m` (NaN and infinity: none), infinity when there is none.
+cv::Mat BlockMinimum(const cv::Mat& depth_m, int block_px, double min_depth_m) {
   const float inf = std::numeric_limits<float>::infinity();
-  cv::Mat blocks((depth.rows + block_px - 1) / block_px, (depth.cols + block_px - 1) / block_px,
+  cv::Mat blocks((depth_m.rows + block_px - 1) / block_px, (depth_m.cols + block_px - 1) / block_px,
                  CV_32FC1, cv::Scalar(inf));
-  for (int v = 0; v < depth.rows; ++v) {
-    const float* row = depth.ptr<float>(v);
+  for (int v = 0; v < depth_m.rows; ++v) {
+    const float* row = depth_m.ptr<float>(v);
     float* out = blocks.ptr<float>(v / block_px);
-    for (int u = 0; u < depth.cols; ++u) {
+    for (int u = 0; u < depth_m.cols; ++u) {
       const float d = row[u];
       // NaN and infinity fail: no measurement.
       if (d >= min_depth_m && d < out[u / block_px]) out[u / block_px] = d;
     }
   }
+  return blocks;
+}
+
+}  // namespace
+
+DepthView::DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
+                     double min_depth_m)
+    : DepthView(frame.camera, T_world_camera, block_px,
+                BlockMinimum(frame.depth_m, block_px, min_depth_m)) {}
+
+DepthView::DepthView(std::shared_ptr<const PinholeCamera> camera,
+                     const Eigen::Isometry3d& T_world_camera, int block_px,
+                     const cv::Mat& block_depth_m)
+    : camera_(std::move(camera)), block_px_(block_px) {
+  set_pose(T_world_camera);
   // The nearest depth of each block's 3x3 neighbourhood (a grey erosion: the minimum).
-  cv::erode(blocks, near_m_, cv::Mat::ones(3, 3, CV_8UC1), cv::Point(-1, -1), 1,
-            cv::BORDER_CONSTANT, cv::Scalar(inf));
+  cv::erode(block_depth_m, near_m_, cv::Mat::ones(3, 3, CV_8UC1), cv::Point(-1, -1), 1,
+            cv::BORDER_CONSTANT, cv::Scalar(std::numeric_limits<float>::infinity()));
 }
 
 void DepthView::set_pose(const Eigen::Isometry3d& T_world_camera) {

@@ -6,22 +6,20 @@
 //
 // Prediction source: the recent frames themselves, not the static voxel map. A DepthReference
 // keeps the depth of one frame every DynamicMaskConfig::depth_change_interval_s (the newest
-// depth_change_references), each reduced to the mask's cells as a DepthView (free_space.h: per
-// block of decimation x decimation pixels the nearest depth of its 3x3 blocks, so depth edges
-// and pose errors of a pixel or two give occlusion, not a change). The voxel map is not used: it
-// is fused on the back-end thread from keyframes leaving Slam's window (seconds late, empty in
-// the first frames where the seeds matter most) and contains the people the unmarked points did
-// not mask. A reference that saw a person where the person still is gives no vote; one that saw
-// the wall where the person now stands does.
+// depth_change_references), each reduced to the mask's cells as a DepthView (free_space.h): per
+// block of decimation x decimation pixels the depth of its centre pixel (the pixel the mask's
+// cell takes its depth from), then the nearest of its 3x3 blocks, so depth edges and pose errors
+// of a pixel or two give occlusion, not a change. The voxel map is not used: it is fused on the
+// back-end thread from keyframes leaving Slam's window (seconds late, empty in the first frames
+// where the seeds matter most) and contains the people the unmarked points did not mask. A
+// reference that saw a person where the person still is gives no vote; one that saw the wall
+// where the person now stands does.
 //
-// Cost per frame (tracking thread): adding a reference reads the frame's depth once and erodes
-// the blocks (every depth_change_interval_s only); testing a frame projects the valid, unlabelled,
-// unblocked cells on every depth_change_stride-th row and column (at most 80 x 60 of the 160 x 120
-// cells at 640 x 480, decimation 4, stride 2) into each reference until one sees through it (at
-// most depth_change_references projections per cell). Measured by scripts/mapping_benchmark.py
-// (run summaries' median_objects_ms: mask and tracking per frame, a shared, loaded machine):
-// walking seed 1 0.95 ms without the seeds, 1.48 ms with them; static_room seed 1 0.14 and
-// 0.54 ms (its p95 0.20 and 4.60 ms: the frames that add a reference).
+// Cost per frame (tracking thread): adding a reference reads one pixel per block and erodes the
+// blocks (every depth_change_interval_s only; no pass over the full-size image); testing a frame
+// projects the valid, unlabelled, unblocked cells on every depth_change_stride-th row and column
+// (at most 80 x 60 of the 160 x 120 cells at 640 x 480, decimation 4, stride 2) into each
+// reference until one sees through it (at most depth_change_references projections per cell).
 
 #include <deque>
 #include <vector>

@@ -51,6 +51,13 @@ class DepthView {
   DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
             double min_depth_m);
 
+  /// A view of `camera` from depths already reduced to blocks: `block_depth_m` (CV_32FC1,
+  /// ceil(height / block_px) x ceil(width / block_px)) holds one depth [m] per block (infinity:
+  /// none, never NaN), e.g. one sampled pixel per block; each block's nearest depth of its 3x3
+  /// neighbourhood is taken as above.
+  DepthView(std::shared_ptr<const PinholeCamera> camera, const Eigen::Isometry3d& T_world_camera,
+            int block_px, const cv::Mat& block_depth_m);
+
   /// The vote of this view on `p_world` [m, world frame].
   Visibility Vote(const Eigen::Vector3f& p_world, const FreeSpaceTolerance& tolerance) const;
 
