@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_set>
+#include <utility>
 
 #include "cell_grid.h"
 #include "dslam/core/depth_uncertainty.h"
@@ -40,12 +41,12 @@ std::vector<uint8_t> ChangedCells(const CellGrid& grid, const DepthReference& re
                                   const std::vector<uint8_t>& blocked, const uint16_t* label,
                                   const Eigen::Isometry3d& T_world_camera, int stride) {
   std::vector<uint8_t> changed(grid.size(), 0);
+  const DepthReference::FrameTest test = reference.ForFrame(T_world_camera);
   for (int r = 0; r < grid.rows(); r += stride) {
     for (int c = 0; c < grid.cols(); c += stride) {
       const int cell = r * grid.cols() + c;
       if (label[cell] != 0 || blocked[cell] || grid.CellDepth(cell) <= 0.0) continue;
-      const Eigen::Vector3d& p = grid.CellPoint(cell);
-      changed[cell] = reference.Changed(T_world_camera * p, p.z()) ? 1 : 0;
+      changed[cell] = test.Changed(grid.CellPoint(cell)) ? 1 : 0;
     }
   }
   return changed;
@@ -86,30 +87,33 @@ std::vector<std::vector<int>> ChangedGroups(const CellGrid& grid, std::vector<ui
   return groups;
 }
 
-/// Gives each region from `first_new` on (those the depth-change step made; `before`: the labels
-/// before it) the not verified static points (not yet in a region) in its cells whose depth is
-/// continuous with their cell's.
-void AttachPoints(const CellGrid& grid, const std::vector<ObservedPoint>& points,
-                  const cv::Mat& before, size_t first_new, const Eigen::Isometry3d& T_world_camera,
-                  DynamicMask* mask) {
+/// Gives each region from `first_new` on (those the depth-change step made; their cells were all
+/// unlabelled before it) the not verified static points (not yet in a region) in its cells whose
+/// depth is continuous with their cell's.
+void AttachPoints(const CellGrid& grid, const std::vector<ObservedPoint>& points, size_t first_new,
+                  const Eigen::Isometry3d& T_world_camera, DynamicMask* mask) {
+  if (mask->regions.size() == first_new) return;  // none made, or all merged into earlier ones
   std::unordered_set<PointId> taken;
-  for (const DynamicRegion& region : mask->regions)
-    taken.insert(region.points.begin(), region.points.end());
+  bool have_taken = false;  // `taken` is filled on the first point that needs it
   const uint16_t* label = mask->labels.ptr<uint16_t>();
-  const uint16_t* old = before.ptr<uint16_t>();
   for (const ObservedPoint& point : points) {
-    if ((point.is_static && !point.is_candidate) || taken.count(point.id) > 0) continue;
+    if (point.is_static && !point.is_candidate) continue;
     const int u = static_cast<int>(std::lround(point.uv_raw.x()));
     const int v = static_cast<int>(std::lround(point.uv_raw.y()));
     const int cell = grid.CellOf(u, v);
-    if (cell < 0 || old[cell] != 0 || label[cell] == 0 || label[cell] <= first_new) continue;
+    if (cell < 0 || label[cell] <= first_new) continue;
     const double z = grid.PixelDepth(u, v);
     if (z <= 0.0 || std::abs(z - grid.CellDepth(cell)) > grid.DepthStep(z)) continue;
+    if (!have_taken) {
+      for (const DynamicRegion& region : mask->regions)
+        taken.insert(region.points.begin(), region.points.end());
+      have_taken = true;
+    }
+    if (!taken.insert(point.id).second) continue;
     DynamicRegion& region = mask->regions[label[cell] - 1];
     region.points.push_back(point.id);
     region.points_world.push_back(T_world_camera * grid.BackProjectPixel(point.uv_raw, z));
     region.point_cells.push_back(cell);
-    taken.insert(point.id);
   }
 }
 
@@ -143,16 +147,42 @@ void DepthReference::Add(const RgbdFrame& frame, const Eigen::Isometry3d& T_worl
   while (static_cast<int>(views_.size()) > mask_.depth_change_references) views_.pop_front();
 }
 
-bool DepthReference::Changed(const Eigen::Vector3d& p_world, double depth_m) const {
+FreeSpaceTolerance DepthReference::Tolerance(double depth_m) const {
   FreeSpaceTolerance tolerance;
   tolerance.margin_m =
       mask_.depth_change_margin_m + mask_.depth_change_sigma_factor * DepthSigma(depth_m, noise_);
   tolerance.margin_ratio = 0.0;
   tolerance.min_depth_m = noise_.min_depth_m;
   tolerance.max_depth_m = mask_.max_depth_m;
+  return tolerance;
+}
+
+bool DepthReference::Changed(const Eigen::Vector3d& p_world, double depth_m) const {
+  const FreeSpaceTolerance tolerance = Tolerance(depth_m);
   const Eigen::Vector3f p = p_world.cast<float>();
   for (auto view = views_.rbegin(); view != views_.rend(); ++view) {
     if (view->Vote(p, tolerance) == Visibility::kSeeThrough) return true;
+  }
+  return false;
+}
+
+DepthReference::FrameTest DepthReference::ForFrame(const Eigen::Isometry3d& T_world_camera) const {
+  FrameTest test;
+  test.reference_ = this;
+  for (auto view = views_.rbegin(); view != views_.rend(); ++view) {
+    test.T_view_camera_.push_back(
+        (view->T_camera_world().cast<double>() * T_world_camera).cast<float>());
+  }
+  return test;
+}
+
+bool DepthReference::FrameTest::Changed(const Eigen::Vector3d& p_camera) const {
+  const FreeSpaceTolerance tolerance = reference_->Tolerance(p_camera.z());
+  const Eigen::Vector3f p = p_camera.cast<float>();
+  auto view = reference_->views_.rbegin();
+  for (const Eigen::Isometry3f& T_view_camera : T_view_camera_) {
+    if (view->VoteInView(T_view_camera * p, tolerance) == Visibility::kSeeThrough) return true;
+    ++view;
   }
   return false;
 }
@@ -162,13 +192,12 @@ void AddDepthChangeRegions(const CellGrid& grid, const DepthReference& reference
                            const std::vector<uint8_t>& blocked,
                            const Eigen::Isometry3d& T_world_camera, const DynamicMaskConfig& config,
                            DynamicMask* mask) {
-  const cv::Mat before = mask->labels.clone();
   const size_t first_new = mask->regions.size();
   const int stride = config.depth_change_stride;
-  const std::vector<uint8_t> changed =
-      ChangedCells(grid, reference, blocked, before.ptr<uint16_t>(), T_world_camera, stride);
+  std::vector<uint8_t> changed =
+      ChangedCells(grid, reference, blocked, mask->labels.ptr<uint16_t>(), T_world_camera, stride);
   for (const std::vector<int>& group :
-       ChangedGroups(grid, changed, stride, config.depth_change_min_cells)) {
+       ChangedGroups(grid, std::move(changed), stride, config.depth_change_min_cells)) {
     RegionSeeds seeds;
     seeds.label = static_cast<uint16_t>(mask->regions.size() + 1);
     seeds.margin_m = config.margin_m;
@@ -193,7 +222,7 @@ void AddDepthChangeRegions(const CellGrid& grid, const DepthReference& reference
       MergeRegion(region, &mask->regions[into - 1], &mask->labels);
     }
   }
-  AttachPoints(grid, points, before, first_new, T_world_camera, mask);
+  AttachPoints(grid, points, first_new, T_world_camera, mask);
 }
 
 }  // namespace dslam

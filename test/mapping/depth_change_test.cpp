@@ -99,6 +99,27 @@ TEST(DepthReference, ChangedOnlyInFrontOfWhatWasSeen) {
   EXPECT_FALSE(reference.Changed(Eigen::Vector3d(0.1, 0.0, kWallZ + 1.0), kWallZ + 1.0));
 }
 
+TEST(DepthReference, FrameTestAgreesWithTheWorldFrameTest) {
+  // References of the wall and of a box before it, seen from x = 0 and 0.2 m; the test of a frame
+  // at x = 0.5 m on its points (optical frame) answers as Changed() on them in the world frame.
+  DepthReference reference(SeedConfig(), DepthNoiseConfig());
+  reference.Add(Render(0.0, {}, nullptr), CameraAt(0.0), 0.0);
+  reference.Add(Render(0.2, {{0.3, 0.8, -0.4, 0.4}}, nullptr), CameraAt(0.2), 0.2);
+  const Eigen::Isometry3d T_world_camera = CameraAt(0.5);
+  const DepthReference::FrameTest test = reference.ForFrame(T_world_camera);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> lateral(-1.0, 1.0), depth(0.5, 4.0);
+  int changed = 0, unchanged = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector3d p_camera(lateral(rng), lateral(rng), depth(rng));
+    const bool expected = reference.Changed(T_world_camera * p_camera, p_camera.z());
+    EXPECT_EQ(test.Changed(p_camera), expected) << p_camera.transpose();
+    (expected ? changed : unchanged) += 1;
+  }
+  EXPECT_GT(changed, 200);  // both answers occur
+  EXPECT_GT(unchanged, 200);
+}
+
 TEST(DepthChangeSeeds, BoxAppearingInFrontOfTheWallIsMasked) {
   std::mt19937 rng(7);
   DepthReference reference(SeedConfig(), DepthNoiseConfig());

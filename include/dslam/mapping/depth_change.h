@@ -52,11 +52,29 @@ class DepthReference {
   /// sigma_d(depth_m).
   bool Changed(const Eigen::Vector3d& p_world, double depth_m) const;
 
+  /// Changed() for the points of one frame, given in its optical frame: the references' poses
+  /// relative to the frame are composed once. Valid while the DepthReference is not changed.
+  class FrameTest {
+   public:
+    /// Changed(T_world_camera * p_camera, p_camera.z()) for `p_camera` [m, optical frame].
+    bool Changed(const Eigen::Vector3d& p_camera) const;
+
+   private:
+    friend class DepthReference;
+    const DepthReference* reference_ = nullptr;
+    std::vector<Eigen::Isometry3f> T_view_camera_;  ///< per reference, newest first
+  };
+  /// The test of the frame at `T_world_camera` (optical frame -> world) [m].
+  FrameTest ForFrame(const Eigen::Isometry3d& T_world_camera) const;
+
   bool empty() const { return views_.empty(); }
   int size() const { return static_cast<int>(views_.size()); }  ///< references kept
   void Clear() { views_.clear(); }
 
  private:
+  /// The tolerance of a point measured at `depth_m` [m] (see Changed()).
+  FreeSpaceTolerance Tolerance(double depth_m) const;
+
   DynamicMaskConfig mask_;
   DepthNoiseConfig noise_;
   std::deque<DepthView> views_;  ///< oldest first
