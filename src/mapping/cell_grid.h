@@ -39,6 +39,11 @@ class CellGrid {
   Eigen::Vector3d BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const;
   /// [m] the cell's centre point in the optical frame (its depth must be valid).
   const Eigen::Vector3d& CellPoint(int cell) const;
+  /// [m] CellPoint(cell) computed without caching it (for cells looked at once).
+  Eigen::Vector3d CellPointOnce(int cell) const {
+    const double z = depth_[cell];
+    return Eigen::Vector3d(rays_[cell].x() * z, rays_[cell].y() * z, z);
+  }
   /// [0, 1] the cell's centre colour (B, G, R).
   Eigen::Vector3d CellColour(int cell) const;
 

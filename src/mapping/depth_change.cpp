@@ -40,15 +40,21 @@ cv::Mat CentreDepths(const cv::Mat& depth_m, int block_px, double min_depth_m) {
 std::vector<uint8_t> ChangedCells(const CellGrid& grid, const DepthReference& reference,
                                   const std::vector<uint8_t>& blocked, const uint16_t* label,
                                   const Eigen::Isometry3d& T_world_camera, int stride) {
-  std::vector<uint8_t> changed(grid.size(), 0);
-  const DepthReference::FrameTest test = reference.ForFrame(T_world_camera);
+  std::vector<int> cells;
+  std::vector<Eigen::Vector3d> points;
+  cells.reserve(grid.size() / (stride * stride) + grid.cols());
+  points.reserve(cells.capacity());
   for (int r = 0; r < grid.rows(); r += stride) {
     for (int c = 0; c < grid.cols(); c += stride) {
       const int cell = r * grid.cols() + c;
       if (label[cell] != 0 || blocked[cell] || grid.CellDepth(cell) <= 0.0) continue;
-      changed[cell] = test.Changed(grid.CellPoint(cell)) ? 1 : 0;
+      cells.push_back(cell);
+      points.push_back(grid.CellPointOnce(cell));
     }
   }
+  const std::vector<uint8_t> test = reference.ForFrame(T_world_camera).ChangedAll(points);
+  std::vector<uint8_t> changed(grid.size(), 0);
+  for (size_t i = 0; i < cells.size(); ++i) changed[cells[i]] = test[i];
   return changed;
 }
 
@@ -176,15 +182,34 @@ DepthReference::FrameTest DepthReference::ForFrame(const Eigen::Isometry3d& T_wo
   return test;
 }
 
-bool DepthReference::FrameTest::Changed(const Eigen::Vector3d& p_camera) const {
-  const FreeSpaceTolerance tolerance = reference_->Tolerance(p_camera.z());
-  const Eigen::Vector3f p = p_camera.cast<float>();
+std::vector<uint8_t> DepthReference::FrameTest::ChangedAll(
+    const std::vector<Eigen::Vector3d>& points_camera) const {
+  const size_t n = points_camera.size();
+  std::vector<uint8_t> changed(n, 0);
+  std::vector<Eigen::Vector3f> points(n);
+  std::vector<double> margins(n);
+  std::vector<int> pending(n);  // indices not yet seen through
+  for (size_t i = 0; i < n; ++i) {
+    points[i] = points_camera[i].cast<float>();
+    margins[i] = reference_->Tolerance(points_camera[i].z()).margin_m;
+    pending[i] = static_cast<int>(i);
+  }
+  FreeSpaceTolerance tolerance = reference_->Tolerance(0.0);
   auto view = reference_->views_.rbegin();
   for (const Eigen::Isometry3f& T_view_camera : T_view_camera_) {
-    if (view->VoteInView(T_view_camera * p, tolerance) == Visibility::kSeeThrough) return true;
+    size_t kept = 0;
+    for (const int i : pending) {
+      tolerance.margin_m = margins[i];
+      if (view->VoteInView(T_view_camera * points[i], tolerance) == Visibility::kSeeThrough) {
+        changed[i] = 1;
+      } else {
+        pending[kept++] = i;
+      }
+    }
+    pending.resize(kept);
     ++view;
   }
-  return false;
+  return changed;
 }
 
 void AddDepthChangeRegions(const CellGrid& grid, const DepthReference& reference,

@@ -109,11 +109,15 @@ TEST(DepthReference, FrameTestAgreesWithTheWorldFrameTest) {
   const DepthReference::FrameTest test = reference.ForFrame(T_world_camera);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> lateral(-1.0, 1.0), depth(0.5, 4.0);
+  std::vector<Eigen::Vector3d> points_camera;
+  for (int i = 0; i < 2000; ++i) points_camera.emplace_back(lateral(rng), lateral(rng), depth(rng));
+  const std::vector<uint8_t> answers = test.ChangedAll(points_camera);
+  ASSERT_EQ(answers.size(), points_camera.size());
   int changed = 0, unchanged = 0;
-  for (int i = 0; i < 2000; ++i) {
-    const Eigen::Vector3d p_camera(lateral(rng), lateral(rng), depth(rng));
-    const bool expected = reference.Changed(T_world_camera * p_camera, p_camera.z());
-    EXPECT_EQ(test.Changed(p_camera), expected) << p_camera.transpose();
+  for (size_t i = 0; i < points_camera.size(); ++i) {
+    const Eigen::Vector3d& p = points_camera[i];
+    const bool expected = reference.Changed(T_world_camera * p, p.z());
+    EXPECT_EQ(answers[i] != 0, expected) << p.transpose();
     (expected ? changed : unchanged) += 1;
   }
   EXPECT_GT(changed, 200);  // both answers occur

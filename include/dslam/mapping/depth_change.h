@@ -56,8 +56,10 @@ class DepthReference {
   /// relative to the frame are composed once. Valid while the DepthReference is not changed.
   class FrameTest {
    public:
-    /// Changed(T_world_camera * p_camera, p_camera.z()) for `p_camera` [m, optical frame].
-    bool Changed(const Eigen::Vector3d& p_camera) const;
+    /// Changed(T_world_camera * p, p.z()) of each p of `points_camera` [m, optical frame]: 1
+    /// where changed, 0 elsewhere. Tests the points against one reference before the next (its
+    /// blocks stay in the cache), each only until one sees through it.
+    std::vector<uint8_t> ChangedAll(const std::vector<Eigen::Vector3d>& points_camera) const;
 
    private:
     friend class DepthReference;
