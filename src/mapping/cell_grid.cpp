@@ -84,8 +84,7 @@ Eigen::Vector3d CellGrid::BackProjectPixel(const Eigen::Vector2d& uv_raw, double
 
 const Eigen::Vector3d& CellGrid::CellPoint(int cell) const {
   if (!has_point_[cell]) {
-    const double z = depth_[cell];
-    points_[cell] = Eigen::Vector3d(rays_[cell].x() * z, rays_[cell].y() * z, z);
+    points_[cell] = CellPointOnce(cell);
     has_point_[cell] = 1;
   }
   return points_[cell];

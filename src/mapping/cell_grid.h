@@ -11,6 +11,7 @@
 
 #include "dslam/core/objects_config.h"
 #include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/depth_change.h"
 #include "dslam/mapping/dynamic_mask.h"
 
 namespace dslam {
@@ -38,6 +39,11 @@ class CellGrid {
   Eigen::Vector3d BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const;
   /// [m] the cell's centre point in the optical frame (its depth must be valid).
   const Eigen::Vector3d& CellPoint(int cell) const;
+  /// [m] CellPoint(cell) computed without caching it (for cells looked at once).
+  Eigen::Vector3d CellPointOnce(int cell) const {
+    const double z = depth_[cell];
+    return Eigen::Vector3d(rays_[cell].x() * z, rays_[cell].y() * z, z);
+  }
   /// [0, 1] the cell's centre colour (B, G, R).
   Eigen::Vector3d CellColour(int cell) const;
 
@@ -88,5 +94,14 @@ DynamicRegion GrowRegion(const CellGrid& grid, const RegionSeeds& seeds,
 
 /// Adds region `from` to region `into` (statistics, points); relabels from's cells in `labels`.
 void MergeRegion(const DynamicRegion& from, DynamicRegion* into, cv::Mat* labels);
+
+/// Step 4 of dynamic_mask.h (in depth_change.cpp): grows the depth-change regions of the frame of
+/// `grid` into `mask` (its labels and regions), never into `blocked` cells, and gives the cells
+/// it labels the not verified static `points` in them.
+void AddDepthChangeRegions(const CellGrid& grid, const DepthReference& reference,
+                           const std::vector<ObservedPoint>& points,
+                           const std::vector<uint8_t>& blocked,
+                           const Eigen::Isometry3d& T_world_camera, const DynamicMaskConfig& config,
+                           DynamicMask* mask);
 
 }  // namespace dslam

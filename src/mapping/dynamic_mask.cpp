@@ -143,7 +143,7 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
                                const std::vector<ObservedPoint>& points,
                                const DynamicMaskConfig& config,
                                const std::vector<Eigen::Vector3d>& near_world, double near_m,
-                               int near_min_points) {
+                               int near_min_points, const DepthReference* reference) {
   const CellGrid grid(frame, config);
   DynamicMask mask;
   mask.decimation = config.decimation;
@@ -194,6 +194,9 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
       MergeRegion(region, &mask.regions[*std::min_element(touched.begin(), touched.end()) - 1],
                   &mask.labels);
     }
+  }
+  if (reference != nullptr && !reference->empty()) {
+    AddDepthChangeRegions(grid, *reference, points, blocked, T_world_camera, config, &mask);
   }
   return mask;
 }

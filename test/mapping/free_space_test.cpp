@@ -1,6 +1,7 @@
 // The free-space check with known answers: a view's votes, and a transient object seen in front
 // of a wall by one keyframe and through by another, in either order, removed from the map.
 #include <cmath>
+#include <limits>
 #include <set>
 #include <utility>
 
@@ -63,6 +64,29 @@ TEST(DepthView, DepthEdgesAndMissingDepthGiveNoSeeThrough) {
   const KeyFrameRecord empty = MakeKeyFrame(1, Wall(0.0f));
   const DepthView none(empty.frame, Eigen::Isometry3d::Identity(), 4, 0.3);
   EXPECT_EQ(none.Vote(at_pixel(320, 2.0), Tolerance()), Visibility::kNoVote);
+}
+
+TEST(DepthView, FromBlockDepthsTakesTheNearestOfTheNeighbours) {
+  // Blocks of 4 px of a wall at 3 m: block column 50 (u 200-203) at 1.5 m, column 100 (u 400-403)
+  // and columns 120-130 (u 480-523) without depth.
+  const KeyFrameRecord wall = MakeKeyFrame(0, Wall(3.0f));
+  const float inf = std::numeric_limits<float>::infinity();
+  cv::Mat blocks(120, 160, CV_32FC1, cv::Scalar(3.0f));
+  blocks.col(50).setTo(1.5f);
+  blocks.col(100).setTo(inf);
+  blocks.colRange(120, 131).setTo(inf);
+  const DepthView view(wall.frame.camera, Eigen::Isometry3d::Identity(), 4, blocks);
+  const auto at_pixel = [](double u, double z) {
+    return Eigen::Vector3f(static_cast<float>((u - 320.25) * z / 505.0), 0.0f,
+                           static_cast<float>(z));
+  };
+  EXPECT_EQ(view.Vote(at_pixel(250, 2.0), Tolerance()), Visibility::kSeeThrough);
+  EXPECT_EQ(view.Vote(at_pixel(250, 3.0), Tolerance()), Visibility::kSupport);
+  EXPECT_EQ(view.Vote(at_pixel(206, 2.0), Tolerance()), Visibility::kNoVote);  // next to 1.5 m
+  EXPECT_EQ(view.Vote(at_pixel(196, 2.0), Tolerance()), Visibility::kNoVote);
+  EXPECT_EQ(view.Vote(at_pixel(190, 2.0), Tolerance()), Visibility::kSeeThrough);
+  EXPECT_EQ(view.Vote(at_pixel(402, 2.0), Tolerance()), Visibility::kSeeThrough);  // neighbours
+  EXPECT_EQ(view.Vote(at_pixel(502, 2.0), Tolerance()), Visibility::kNoVote);      // none around
 }
 
 // Points of `cloud` nearer than 2.5 m (the box at 1.51 m; the wall is at 3.01 m: depths off the

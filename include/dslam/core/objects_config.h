@@ -19,6 +19,13 @@ struct DynamicMaskConfig {
   double depth_step_ratio = 0.02;
   double margin_m = 0.25;
   double max_depth_m = 6.0;
+  bool depth_change_seeds = true;
+  double depth_change_interval_s = 0.2;
+  int depth_change_references = 3;
+  double depth_change_margin_m = 0.1;
+  double depth_change_sigma_factor = 3.0;
+  int depth_change_min_cells = 40;
+  int depth_change_stride = 2;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -44,6 +51,31 @@ struct DynamicMaskConfig {
       s.margin_m);
     v(Field("max_depth_m", "m", 0.1, 100.0, "cells farther than this are never masked"),
       s.max_depth_m);
+    // Depth-change seeds (dslam/mapping/depth_change.h): cells clearly nearer than a recent
+    // reference frame saw along their ray (depth_change_margin_m + depth_change_sigma_factor *
+    // sigma_d(depth), sigma_d of depth_noise) mark something that was not there then; connected
+    // groups of at least depth_change_min_cells such cells grow regions like the points' clusters.
+    // Reference frames: one every depth_change_interval_s, the newest depth_change_references kept.
+    v(Flag("depth_change_seeds",
+           "also seed regions where the depth came nearer than recent frames"),
+      s.depth_change_seeds);
+    v(Field("depth_change_interval_s", "s", 0.01, 10.0, "time between two reference frames"),
+      s.depth_change_interval_s);
+    v(Field("depth_change_references", "-", 1, 20, "reference frames kept (newest)"),
+      s.depth_change_references);
+    v(Field("depth_change_margin_m", "m", 0.0, 5.0,
+            "constant part of the depth change a changed cell needs"),
+      s.depth_change_margin_m);
+    v(Field("depth_change_sigma_factor", "-", 0.0, 100.0,
+            "depth-noise sigmas of the depth change a changed cell needs"),
+      s.depth_change_sigma_factor);
+    v(Field("depth_change_min_cells", "-", 1, 100000,
+            "connected changed cells a depth-change seed needs"),
+      s.depth_change_min_cells);
+    // Only the cells on every depth_change_stride-th row and column are tested (each stands for
+    // stride x stride cells in depth_change_min_cells); the growth fills the cells between.
+    v(Field("depth_change_stride", "cells", 1, 8, "spacing of the cells tested for depth change"),
+      s.depth_change_stride);
   }
 };
 

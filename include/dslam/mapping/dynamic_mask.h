@@ -14,6 +14,13 @@
 //    whose 3D point lies within margin_m of the cluster's box. Cells of verified static points
 //    are never entered; a cell belongs to the first region that reaches it. A region that meets
 //    an earlier one across a depth-continuous border is merged into it (one surface, one thing).
+// 4. With a DepthReference (depth_change.h): the cells (not blocked, not yet labelled) nearer than
+//    a recent frame saw along their ray, in 4-connected depth-continuous groups of at least
+//    depth_change_min_cells, grow regions as in 3 (box: the group's cells). A region that meets
+//    an earlier one, or whose world box comes within margin_m of an earlier region's box (a limb
+//    or the head of a person whose body the points seeded), is merged into it. The matched points
+//    not verified static (unmarked, or candidates) in the cells of the new regions this step
+//    keeps join them as their points, measured as in 1.
 
 #include <cstdint>
 #include <vector>
@@ -24,6 +31,7 @@
 
 #include "dslam/core/objects_config.h"
 #include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/depth_change.h"
 #include "dslam/tracking/frame_result.h"
 
 namespace dslam {
@@ -70,11 +78,12 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
 /// As above, and clusters with fewer than min_cluster_points points but at least
 /// `near_min_points` are kept when the mean of their points lies within `near_m` [m] of one of
 /// `near_world` [m, world frame] (where tracked moving objects are expected: a tracked person
-/// with few unmarked points in this frame).
+/// with few unmarked points in this frame). With `reference` (not null, not empty), regions are
+/// also seeded by depth change (step 4 above).
 DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera,
                                const std::vector<ObservedPoint>& points,
                                const DynamicMaskConfig& config,
                                const std::vector<Eigen::Vector3d>& near_world, double near_m,
-                               int near_min_points);
+                               int near_min_points, const DepthReference* reference = nullptr);
 
 }  // namespace dslam

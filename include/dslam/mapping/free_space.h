@@ -51,16 +51,31 @@ class DepthView {
   DepthView(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera, int block_px,
             double min_depth_m);
 
+  /// A view of `camera` from depths already reduced to blocks: `block_depth_m` (CV_32FC1,
+  /// ceil(height / block_px) x ceil(width / block_px)) holds one depth [m] per block (infinity:
+  /// none, never NaN), e.g. one sampled pixel per block; each block's nearest depth of its 3x3
+  /// neighbourhood is taken as above.
+  DepthView(std::shared_ptr<const PinholeCamera> camera, const Eigen::Isometry3d& T_world_camera,
+            int block_px, const cv::Mat& block_depth_m);
+
   /// The vote of this view on `p_world` [m, world frame].
   Visibility Vote(const Eigen::Vector3f& p_world, const FreeSpaceTolerance& tolerance) const;
 
+  /// The vote of this view on `p_camera` [m], a point already in this view's optical frame
+  /// (Vote() of T_camera_world() * p_world).
+  Visibility VoteInView(const Eigen::Vector3f& p_camera, const FreeSpaceTolerance& tolerance) const;
+
   /// Sets the keyframe's pose (optical frame -> world) [m].
   void set_pose(const Eigen::Isometry3d& T_world_camera);
+  /// The keyframe's pose inverted (world -> optical frame) [m].
+  const Eigen::Isometry3f& T_camera_world() const { return T_camera_world_; }
 
  private:
   std::shared_ptr<const PinholeCamera> camera_;
+  bool distorted_;  ///< whether camera_ has a distortion model (not all zero)
   Eigen::Isometry3f T_camera_world_;
   int block_px_;
+  int block_shift_ = -1;  ///< log2(block_px_) when block_px_ is a power of two, else -1
   cv::Mat near_m_;  ///< CV_32FC1 per block: nearest valid depth of the 3x3 blocks [m]; inf: none
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // The moving objects of each frame, from its FrameResult: the dynamic mask (dynamic_mask.h) of
-// the frame's unmarked points, its regions split where two things move differently
+// the frame's unmarked points (and, with dynamic_mask.depth_change_seeds, the depth change against
+// recent frames: depth_change.h), its regions split where two things move differently
 // (region_split.h), the regions as observations, and the tracker (object_tracker.h).
 // Runs on the thread that consumes FrameResults (the tracking thread of dslam_run_dataset, the
 // node's worker), after Slam::ProcessFrame.
@@ -10,6 +11,7 @@
 
 #include "dslam/core/config.h"
 #include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/depth_change.h"
 #include "dslam/mapping/dynamic_mask.h"
 #include "dslam/mapping/object_tracker.h"
 #include "dslam/tracking/frame_result.h"
@@ -34,6 +36,7 @@ class MovingObjectTracker {
   void Reset() {
     tracker_.Reset();
     history_.clear();
+    reference_.Clear();
   }
 
  private:
@@ -43,6 +46,8 @@ class MovingObjectTracker {
   ObjectTracker tracker_;
   DynamicMask mask_;
   std::deque<PointPositions> history_;  ///< recent frames' unmarked points, oldest first
+  /// Recent frames' depth for the depth-change seeds (DynamicMaskConfig::depth_change_seeds).
+  DepthReference reference_;
 };
 
 }  // namespace dslam
