@@ -64,8 +64,16 @@ struct RegionSeeds {
   std::vector<PointId> points;                 ///< the points of the cluster
   std::vector<int> point_cells;                ///< each point's seed cell, -1 when none
   std::vector<Eigen::Vector3d> points_camera;  ///< [m] their positions, optical frame
-  Eigen::Vector3d box_min, box_max;            ///< [m] box of the cluster's points, optical frame
-  double margin_m = 0.0;                       ///< [m] how far the region may grow beyond the box
+  /// [m] box of the cluster's points, optical frame (empty until Include()).
+  Eigen::Vector3d box_min = Eigen::Vector3d::Constant(1e300);
+  Eigen::Vector3d box_max = Eigen::Vector3d::Constant(-1e300);
+  double margin_m = 0.0;  ///< [m] how far the region may grow beyond the box
+
+  /// Grows the box to hold `p_camera` [m, optical frame].
+  void Include(const Eigen::Vector3d& p_camera) {
+    box_min = box_min.cwiseMin(p_camera);
+    box_max = box_max.cwiseMax(p_camera);
+  }
 };
 
 /// Sums of a region's cells, giving its cell count, centroid, box and mean colour.

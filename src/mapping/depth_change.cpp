@@ -227,12 +227,7 @@ void AddDepthChangeRegions(const CellGrid& grid, const DepthReference& reference
     seeds.label = static_cast<uint16_t>(mask->regions.size() + 1);
     seeds.margin_m = config.margin_m;
     seeds.cells = group;
-    seeds.box_min = Eigen::Vector3d::Constant(1e300);
-    seeds.box_max = Eigen::Vector3d::Constant(-1e300);
-    for (int cell : group) {
-      seeds.box_min = seeds.box_min.cwiseMin(grid.CellPoint(cell));
-      seeds.box_max = seeds.box_max.cwiseMax(grid.CellPoint(cell));
-    }
+    for (int cell : group) seeds.Include(grid.CellPoint(cell));
     std::vector<uint16_t> touched;
     DynamicRegion region =
         GrowRegion(grid, seeds, T_world_camera, blocked, &mask->labels, &touched);

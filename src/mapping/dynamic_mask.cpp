@@ -174,11 +174,8 @@ DynamicMask ComputeDynamicMask(const RgbdFrame& frame, const Eigen::Isometry3d& 
     RegionSeeds seeds;
     seeds.label = static_cast<uint16_t>(mask.regions.size() + 1);
     seeds.margin_m = config.margin_m;
-    seeds.box_min = Eigen::Vector3d::Constant(1e300);
-    seeds.box_max = Eigen::Vector3d::Constant(-1e300);
     for (int i : cluster) {
-      seeds.box_min = seeds.box_min.cwiseMin(moving[i].p_camera);
-      seeds.box_max = seeds.box_max.cwiseMax(moving[i].p_camera);
+      seeds.Include(moving[i].p_camera);
       const int cell = SeedCell(grid, moving[i]);
       if (cell >= 0) seeds.cells.push_back(cell);
       seeds.point_cells.push_back(cell);

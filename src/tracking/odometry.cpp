@@ -129,7 +129,7 @@ FrameResult Odometry::Untracked(Current* current, FrameResult result, const char
 
 bool Odometry::Relocalise(Current* current, int frame_index) {
   const TrackingConfig& cfg = config_.tracking;
-  if (!cfg.relocalisation) return false;
+  if (!CanRelocalise()) return false;
   const DescriptorMatchRules rules{cfg.relocalisation_max_distance_bits, cfg.relocalisation_ratio};
   const std::vector<PointMatch> by_descriptor =
       MatchByDescriptor(map_, WindowMarkedPoints(map_), current->features, rules);

@@ -192,13 +192,17 @@ bool Odometry::NeedKeyFrame(int static_matches) const {
          static_matches < cfg.keyframe_min_tracked_ratio * last_keyframe_static_;
 }
 
+bool Odometry::DrovePose(const Current& current, size_t m) {
+  return current.pose.inliers[m] && (current.excluded.empty() || !current.excluded[m]);
+}
+
 void Odometry::FuseStaticPoints(const Current& current) {
   const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
   for (size_t m = 0; m < current.matches.size(); ++m) {
     MapPoint* point = map_.Find(current.matches[m].id);
     const auto& measurement = current.features.features[current.matches[m].feature].measurement;
     if (point == nullptr || !measurement || !point->IsVerifiedStatic()) continue;
-    if (!current.pose.inliers[m] || (!current.excluded.empty() && current.excluded[m])) continue;
+    if (!DrovePose(current, m)) continue;
     // Information-weighted mean of the map position and this keyframe's measurement.
     const Eigen::Matrix3d info_map = point->cov_world.inverse();
     const PointMeasurement in_world = Transformed(*measurement, T_world_camera);
@@ -213,7 +217,7 @@ void Odometry::RefineDescriptors(const Current& current) {
   const int keep = config_.tracking.descriptor_observations;
   if (keep <= 1) return;
   for (size_t m = 0; m < current.matches.size(); ++m) {
-    if (!current.pose.inliers[m] || (!current.excluded.empty() && current.excluded[m])) continue;
+    if (!DrovePose(current, m)) continue;
     MapPoint* point = map_.Find(current.matches[m].id);
     if (point == nullptr) continue;
     RefineDescriptor(point, current.features.descriptors.row(current.matches[m].feature), keep);

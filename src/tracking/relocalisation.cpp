@@ -1,19 +1,13 @@
 #include "dslam/tracking/relocalisation.h"
 
-#include <unordered_set>
-
 #include "dslam/features/matching.h"
 
 namespace dslam {
 
 std::vector<PointId> WindowMarkedPoints(const Map& map) {
-  std::unordered_set<PointId> seen;
   std::vector<PointId> out;
-  for (const KeyFrame& keyframe : map.keyframes()) {
-    for (PointId id : keyframe.points) {
-      const MapPoint* point = map.Find(id);
-      if (point != nullptr && point->marked && seen.insert(id).second) out.push_back(id);
-    }
+  for (PointId id : map.LocalPoints({})) {
+    if (map.Find(id)->marked) out.push_back(id);
   }
   return out;
 }

@@ -124,6 +124,8 @@ class Odometry {
   /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
   int StaticSeenSinceFrame() const;
   int MakeKeyFrame(const Current& current);
+  /// Whether match `m` was an inlier of the frame's pose and not excluded from it.
+  static bool DrovePose(const Current& current, size_t m);
   void FuseStaticPoints(const Current& current);
   /// The keyframe's pose inliers (not excluded) add their descriptors to their points
   /// (RefineDescriptor, tracking.descriptor_observations).
