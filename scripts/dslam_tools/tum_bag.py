@@ -87,9 +87,13 @@ def colour_to_rgb8(pixels, path):
 
 
 def depth_to_metres(raw, depth_scale):
-    """16-bit depth PNG [H,W] -> little-endian float32 metres, 0 (no measurement) -> NaN."""
+    """16-bit depth PNG [H,W] -> little-endian float32 metres, 0 (no measurement) -> NaN.
+    The arithmetic is the offline reader's (DepthFromScaledUint16: cv::Mat::convertTo with scale
+    1 / depth_scale, a float multiply), so that the node given the bag sees the very depths
+    dslam_run_dataset reads from the PNG files (a float division differs in the last bit for
+    about 30 % of the values)."""
     metres = raw.astype("<f4")
-    metres /= np.float32(depth_scale)
+    metres *= np.float32(1.0 / depth_scale)
     metres[raw == 0] = np.nan
     return metres
 

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <set>
 #include <sstream>
 #include <type_traits>
@@ -90,6 +91,12 @@ class YamlWriter {
  private:
   static std::string Value(bool v) { return v ? "true" : "false"; }
   static std::string Value(const std::string& v) { return v; }
+  /// The shortest text that reads back as `v` (0.6, not yaml-cpp's 0.59999999999999998).
+  static std::string Value(double v) {
+    char text[32];
+    const std::to_chars_result end = std::to_chars(text, text + sizeof(text), v);
+    return std::string(text, end.ptr);
+  }
   template <typename T>
   static std::string Value(const T& v) {
     YAML::Emitter emitter;

@@ -128,10 +128,22 @@ bool ObjectTracker::Moving(const ObjectObservation& observation) const {
          observation.motion_speed_mps >= config_.motion_sigma_factor * observation.motion_sigma_mps;
 }
 
+void ObjectTracker::ResetOnManeuver(Track* track, const ObjectObservation& observation) const {
+  Eigen::Matrix3d S = track->P.bottomRightCorner<3, 3>();
+  S.diagonal().array() += config_.velocity_sigma_mps * config_.velocity_sigma_mps;
+  const Eigen::Vector3d y = observation.velocity_world - track->x.tail<3>();
+  if (y.dot(S.ldlt().solve(y)) <= config_.maneuver_chi2) return;
+  track->P.topRightCorner<3, 3>().setZero();
+  track->P.bottomLeftCorner<3, 3>().setZero();
+  track->P.bottomRightCorner<3, 3>() =
+      Eigen::Matrix3d::Identity() * (kInitialVelocitySigmaMps * kInitialVelocitySigmaMps);
+}
+
 void ObjectTracker::Correct(Track* track, const ObjectObservation& observation,
                             double stamp_s) const {
   // z = H x + n: the centroid (H = [I 0]) and, when measured, the points' velocity (H = I).
   const int m = observation.has_velocity ? 6 : 3;
+  if (observation.has_velocity && config_.maneuver_chi2 > 0.0) ResetOnManeuver(track, observation);
   Eigen::Matrix<double, 6, 1> z;
   z << observation.centroid_world, observation.velocity_world;
   Eigen::Matrix<double, 6, 1> r;

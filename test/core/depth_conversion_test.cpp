@@ -28,6 +28,22 @@ TEST(DepthConversion, TumScale) {
   EXPECT_FLOAT_EQ(DepthFromScaledUint16(units, 5000.0).at<float>(0, 0), 1.5f);
 }
 
+// tum_to_bag converts the same way (test/python/test_bagtools.py), so the node given a bag sees
+// the depths dslam_run_dataset reads from the PNG files, bit for bit.
+TEST(DepthConversion, EveryValueIsAFloatMultiplyByTheInverseScale) {
+  cv::Mat units(1, 65536, CV_16UC1);
+  for (int i = 0; i < units.cols; ++i) units.at<uint16_t>(0, i) = static_cast<uint16_t>(i);
+  for (const double scale : {5000.0, 1000.0}) {
+    const cv::Mat metres = DepthFromScaledUint16(units, scale);
+    const float inverse = static_cast<float>(1.0 / scale);
+    int differing = 0;
+    for (int i = 0; i < units.cols; ++i) {
+      differing += metres.at<float>(0, i) != static_cast<float>(i) * inverse;
+    }
+    EXPECT_EQ(differing, 0) << scale;
+  }
+}
+
 TEST(DepthConversion, MetresCleansInvalidValues) {
   cv::Mat m(1, 5, CV_32FC1);
   m.at<float>(0, 0) = std::numeric_limits<float>::quiet_NaN();

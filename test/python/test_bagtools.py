@@ -165,6 +165,14 @@ class TumToBagTest(unittest.TestCase):
             self.assertAlmostEqual(float(metres[5, 7]), 1.0 + i, places=6)
             self.assertEqual(int(np.isnan(metres).sum()), 1)
 
+    def test_depth_conversion_is_the_offline_readers_bit_for_bit(self):
+        # DepthFromScaledUint16 multiplies by the float 1 / depth_scale
+        # (test/core/depth_conversion_test.cpp checks that side for every value).
+        raw = np.arange(1, 65536, dtype=np.uint16).reshape(1, -1)
+        for scale in (5000.0, 1000.0):
+            expected = raw.astype(np.float32) * np.float32(1.0 / scale)
+            self.assertTrue(np.array_equal(tum_bag.depth_to_metres(raw, scale), expected))
+
     def test_camera_info_from_yaml(self):
         bag = self.convert()
         for (info, _), (image, _) in zip(bag[tum_bag.INFO_TOPIC], bag[tum_bag.RGB_TOPIC]):

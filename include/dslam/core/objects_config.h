@@ -101,11 +101,12 @@ struct ObjectsConfig {
   int split_min_points = 5;
   double split_max_overlap = 0.5;
   double split_min_distance_m = 0.4;
-  int min_hits = 3;
+  int min_hits = 2;
   double min_speed_mps = 0.2;
   double motion_sigma_factor = 3.0;
   double coast_s = 0.2;
   double max_unseen_s = 1.0;
+  double maneuver_chi2 = 7.81;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -137,6 +138,13 @@ struct ObjectsConfig {
       s.velocity_sigma_mps);
     v(Field("min_velocity_points", "-", 1, 10000, "points an observed velocity needs"),
       s.min_velocity_points);
+    // A walker turns or stops within a step, faster than the filter's acceleration noise
+    // follows: an observed point velocity whose normalised innovation (chi-square, 3 dof)
+    // exceeds maneuver_chi2 (7.81: 5 % of consistent observations) resets the track's velocity
+    // uncertainty to a new track's before it is applied.
+    v(Field("maneuver_chi2", "-", 0.0, 1e9,
+            "velocity innovation (chi-square, 3 dof) that resets the velocity uncertainty (0: never)"),
+      s.maneuver_chi2);
     // Each point's velocity is taken from its oldest position within a baseline: the filter's
     // velocity measurement over velocity_baseline_s (short: it follows a walker's stops and
     // starts; 0.034 s = the previous frame at 30 Hz), whether a track moves at all over

@@ -2,7 +2,8 @@
 // Moving objects tracked across frames: the dynamic mask's regions (dynamic_mask.h) become
 // observations; each is associated with a track by predicted position and colour (greedy, lowest
 // cost first, gated), and each track filters its centroid (and its points' velocity) with a
-// constant-velocity Kalman filter. A track is reported once it moved (point speeds over
+// constant-velocity Kalman filter, whose velocity uncertainty is reset when an observed velocity
+// is inconsistent with it (a walker turning or stopping within a step). A track is reported once it moved (point speeds over
 // motion_baseline_s of at least ObjectsConfig::min_speed_mps in min_hits consecutive observations:
 // a static surface whose points were mislabelled never does), in the frames where it is observed
 // and for coast_s after (predicted), and dropped after max_unseen_s unseen. Positions, velocities
@@ -124,6 +125,9 @@ class ObjectTracker {
   /// Whether the observation's points moved: motion_speed_mps at least min_speed_mps and at
   /// least motion_sigma_factor times motion_sigma_mps.
   bool Moving(const ObjectObservation& observation) const;
+  /// A maneuver (ObjectsConfig::maneuver_chi2): the observed velocity is inconsistent with the
+  /// track's, whose velocity uncertainty then becomes a new track's (cross terms cleared).
+  void ResetOnManeuver(Track* track, const ObjectObservation& observation) const;
   void Correct(Track* track, const ObjectObservation& observation, double stamp_s) const;
   Track StartTrack(const ObjectObservation& observation, double stamp_s);
   /// Greedy association: for each observation, the index of its track or -1.
