@@ -132,7 +132,10 @@ void ObjectTracker::ResetOnManeuver(Track* track, const ObjectObservation& obser
   Eigen::Matrix3d S = track->P.bottomRightCorner<3, 3>();
   S.diagonal().array() += config_.velocity_sigma_mps * config_.velocity_sigma_mps;
   const Eigen::Vector3d y = observation.velocity_world - track->x.tail<3>();
-  if (y.dot(S.ldlt().solve(y)) <= config_.maneuver_chi2) return;
+  const double nis = y.dot(S.ldlt().solve(y));
+  const bool maneuver = nis + track->last_velocity_nis > config_.maneuver_chi2;
+  track->last_velocity_nis = maneuver ? 0.0 : nis;
+  if (!maneuver) return;
   track->P.topRightCorner<3, 3>().setZero();
   track->P.bottomLeftCorner<3, 3>().setZero();
   track->P.bottomRightCorner<3, 3>() =

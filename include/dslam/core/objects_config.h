@@ -106,7 +106,7 @@ struct ObjectsConfig {
   double motion_sigma_factor = 3.0;
   double coast_s = 0.2;
   double max_unseen_s = 1.0;
-  double maneuver_chi2 = 7.81;
+  double maneuver_chi2 = 12.59;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -139,11 +139,12 @@ struct ObjectsConfig {
     v(Field("min_velocity_points", "-", 1, 10000, "points an observed velocity needs"),
       s.min_velocity_points);
     // A walker turns or stops within a step, faster than the filter's acceleration noise
-    // follows: an observed point velocity whose normalised innovation (chi-square, 3 dof)
-    // exceeds maneuver_chi2 (7.81: 5 % of consistent observations) resets the track's velocity
-    // uncertainty to a new track's before it is applied.
+    // follows: when the normalised innovations of a track's last two observed point velocities
+    // add up to more than maneuver_chi2 (chi-square, 6 dof; 12.59: 5 % of consistent pairs), the
+    // track's velocity uncertainty is reset to a new track's before the second is applied: one
+    // moderately inconsistent velocity (a few noisy points) alone does not reset it.
     v(Field("maneuver_chi2", "-", 0.0, 1e9,
-            "velocity innovation (chi-square, 3 dof) that resets the velocity uncertainty (0: never)"),
+            "two velocity innovations (chi-square, 6 dof) that reset the velocity uncertainty (0: never)"),
       s.maneuver_chi2);
     // Each point's velocity is taken from its oldest position within a baseline: the filter's
     // velocity measurement over velocity_baseline_s (short: it follows a walker's stops and

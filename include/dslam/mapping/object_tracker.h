@@ -119,14 +119,17 @@ class ObjectTracker {
     int hits = 0;
     int moving_streak = 0;  ///< consecutive observations with a point velocity >= min_speed_mps
     bool moved = false;     ///< moving_streak reached min_hits once
+    /// Normalised innovation (chi-square, 3 dof) of the last observed velocity, 0 before one.
+    double last_velocity_nis = 0.0;
   };
 
   void Predict(Track* track, double dt_s) const;
   /// Whether the observation's points moved: motion_speed_mps at least min_speed_mps and at
   /// least motion_sigma_factor times motion_sigma_mps.
   bool Moving(const ObjectObservation& observation) const;
-  /// A maneuver (ObjectsConfig::maneuver_chi2): the observed velocity is inconsistent with the
-  /// track's, whose velocity uncertainty then becomes a new track's (cross terms cleared).
+  /// A maneuver (ObjectsConfig::maneuver_chi2): when the normalised innovations of this observed
+  /// velocity and the track's previous one add up to more than maneuver_chi2, the track's
+  /// velocity uncertainty becomes a new track's (cross terms cleared).
   void ResetOnManeuver(Track* track, const ObjectObservation& observation) const;
   void Correct(Track* track, const ObjectObservation& observation, double stamp_s) const;
   Track StartTrack(const ObjectObservation& observation, double stamp_s);
