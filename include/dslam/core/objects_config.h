@@ -144,7 +144,8 @@ struct ObjectsConfig {
     // track's velocity uncertainty is reset to a new track's before the second is applied: one
     // moderately inconsistent velocity (a few noisy points) alone does not reset it.
     v(Field("maneuver_chi2", "-", 0.0, 1e9,
-            "two velocity innovations (chi-square, 6 dof) that reset the velocity uncertainty (0: never)"),
+            "two velocity innovations (chi-square, 6 dof) that reset the velocity uncertainty (0: "
+            "never)"),
       s.maneuver_chi2);
     // Each point's velocity is taken from its oldest position within a baseline: the filter's
     // velocity measurement over velocity_baseline_s (short: it follows a walker's stops and

@@ -2,12 +2,13 @@
 // Moving objects tracked across frames: the dynamic mask's regions (dynamic_mask.h) become
 // observations; each is associated with a track by predicted position and colour (greedy, lowest
 // cost first, gated), and each track filters its centroid (and its points' velocity) with a
-// constant-velocity Kalman filter, whose velocity uncertainty is reset when an observed velocity
-// is inconsistent with it (a walker turning or stopping within a step). A track is reported once it moved (point speeds over
-// motion_baseline_s of at least ObjectsConfig::min_speed_mps in min_hits consecutive observations:
-// a static surface whose points were mislabelled never does), in the frames where it is observed
-// and for coast_s after (predicted), and dropped after max_unseen_s unseen. Positions, velocities
-// and extents are in the odometry (world) frame of the poses given.
+// constant-velocity Kalman filter, whose velocity uncertainty is reset when two observed velocities
+// in a row are inconsistent with it (a walker turning or stopping within a step). A track is
+// reported once it moved (point speeds over motion_baseline_s of at least
+// ObjectsConfig::min_speed_mps in min_hits consecutive observations: a static surface whose points
+// were mislabelled never does), in the frames where it is observed and for coast_s after
+// (predicted), and dropped after max_unseen_s unseen. Positions, velocities and extents are in the
+// odometry (world) frame of the poses given.
 
 #include <deque>
 #include <unordered_map>
@@ -119,7 +120,8 @@ class ObjectTracker {
     int hits = 0;
     int moving_streak = 0;  ///< consecutive observations with a point velocity >= min_speed_mps
     bool moved = false;     ///< moving_streak reached min_hits once
-    /// Normalised innovation (chi-square, 3 dof) of the last observed velocity, 0 before one.
+    /// Normalised innovation (chi-square, 3 dof) of the last observed velocity; 0 before one and
+    /// after a maneuver reset.
     double last_velocity_nis = 0.0;
   };
 
