@@ -6,8 +6,9 @@
 #include <stdexcept>
 
 #include <opencv2/core/utility.hpp>
-#include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include "dslam/features/fast_grid.h"
 
 namespace dslam {
 namespace orb {
@@ -33,39 +34,35 @@ std::vector<int> LevelShares(const FeaturesConfig& config) {
 
 bool StrongerFirst(const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; }
 
-// FAST over the cell area [x0, x1) x [y0, y1) of one level at `threshold`, with non-maximum
-// suppression; keypoints in level pixels.
-std::vector<cv::KeyPoint> Fast(const cv::Mat& level, int x0, int y0, int x1, int y1,
-                               int threshold) {
-  const cv::Rect roi(x0 - kFastMargin, y0 - kFastMargin, x1 - x0 + 2 * kFastMargin,
-                     y1 - y0 + 2 * kFastMargin);
-  std::vector<cv::KeyPoint> found;
-  cv::FAST(level(roi), found, threshold, true);
-  for (cv::KeyPoint& kp : found) kp.pt += cv::Point2f(roi.x, roi.y);
-  return found;
-}
-
-// The non-empty grid cells of one level (row-major), each strongest first. FAST runs per cell
-// with fast_threshold, and again with fast_threshold_min where it found nothing. (One FAST call
-// over the whole level would be about twice as fast, but its non-maximum suppression across cell
-// borders changes about 4.5 % of the keypoints, and the synthetic walking sequences then lose
-// track in 3 of the 5 seeds that tracked before: BENCHMARKS.md.)
+// The non-empty grid cells of one level (row-major), each strongest first. FAST per cell with
+// fast_threshold, and again with fast_threshold_min in the cells where it found nothing
+// (FastPerCell: the keypoints of one cv::FAST call per cell, found with fewer calls).
+// (Plain whole-level suppression, across cell borders, changes about 4.5 % of the keypoints, and
+// the synthetic walking sequences then lose track in 3 of the 5 seeds that tracked before:
+// BENCHMARKS.md.)
 std::vector<std::vector<cv::KeyPoint>> DetectCells(const cv::Mat& level,
                                                    const FeaturesConfig& config) {
-  const int x0 = kEdgeThreshold, y0 = kEdgeThreshold;
-  const int x1 = level.cols - kEdgeThreshold, y1 = level.rows - kEdgeThreshold;
-  if (x1 - x0 < 2 * kFastMargin || y1 - y0 < 2 * kFastMargin) return {};
-  const int size = config.cell_size_px;
-  std::vector<std::vector<cv::KeyPoint>> cells;
-  for (int cy = y0; cy < y1; cy += size) {
-    for (int cx = x0; cx < x1; cx += size) {
-      const int cx1 = std::min(cx + size, x1), cy1 = std::min(cy + size, y1);
-      std::vector<cv::KeyPoint> cell = Fast(level, cx, cy, cx1, cy1, config.fast_threshold);
-      if (cell.empty()) cell = Fast(level, cx, cy, cx1, cy1, config.fast_threshold_min);
-      if (cell.empty()) continue;
-      std::sort(cell.begin(), cell.end(), StrongerFirst);
-      cells.push_back(std::move(cell));
+  FastGrid grid;
+  grid.x0 = grid.y0 = kEdgeThreshold;
+  grid.x1 = level.cols - kEdgeThreshold;
+  grid.y1 = level.rows - kEdgeThreshold;
+  grid.size = config.cell_size_px;
+  if (grid.x1 - grid.x0 < 2 * kFastMargin || grid.y1 - grid.y0 < 2 * kFastMargin) return {};
+  std::vector<std::vector<cv::KeyPoint>> found = FastPerCell(level, grid, config.fast_threshold);
+  std::vector<uint8_t> empty(found.size());
+  for (size_t index = 0; index < found.size(); ++index) empty[index] = found[index].empty();
+  if (std::count(empty.begin(), empty.end(), 1) > 0) {
+    std::vector<std::vector<cv::KeyPoint>> weak =
+        FastPerCell(level, grid, config.fast_threshold_min, &empty);
+    for (size_t index = 0; index < found.size(); ++index) {
+      if (empty[index]) found[index] = std::move(weak[index]);
     }
+  }
+  std::vector<std::vector<cv::KeyPoint>> cells;
+  for (std::vector<cv::KeyPoint>& cell : found) {
+    if (cell.empty()) continue;
+    std::sort(cell.begin(), cell.end(), StrongerFirst);
+    cells.push_back(std::move(cell));
   }
   return cells;
 }
