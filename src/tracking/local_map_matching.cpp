@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "dslam/features/matching.h"
 
@@ -44,7 +45,7 @@ std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& cand
     candidate.uv_ideal = uv;
     candidate.descriptor = point->descriptor;
     candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), scales, log_scale);
-    projected.push_back(candidate);
+    projected.push_back(std::move(candidate));
     projected_ids.push_back(id);
   }
   ProjectionSearchOptions options;
