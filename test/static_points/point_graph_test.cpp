@@ -1,9 +1,12 @@
 #include "dslam/static_points/point_graph.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include <gtest/gtest.h>
 
@@ -103,6 +106,76 @@ TEST(PointGraph, RandomCloudIsConnectedWithDelaunayDensity) {
   // Random 3D Delaunay: mean vertex degree ~15.5 inside, lower on the hull.
   const double mean_degree = 2.0 * edges.size() / points.size();
   EXPECT_GT(mean_degree, 10.0);
+  EXPECT_LT(mean_degree, 16.0);
+}
+
+// The Delaunay edges by their definition: the edges of every tetrahedron whose circumsphere holds
+// no other point (random points: in general position), sorted and unique.
+std::vector<GraphEdge> BruteForceDelaunayEdges(const std::vector<Eigen::Vector3d>& p) {
+  const int n = static_cast<int>(p.size());
+  std::vector<GraphEdge> edges;
+  for (int a = 0; a < n; ++a) {
+    for (int b = a + 1; b < n; ++b) {
+      for (int c = b + 1; c < n; ++c) {
+        for (int d = c + 1; d < n; ++d) {
+          // Centre x of the sphere through the four: 2 (q - p_a) . x = |q|^2 - |p_a|^2.
+          Eigen::Matrix3d A;
+          Eigen::Vector3d rhs;
+          const int others[3] = {b, c, d};
+          for (int r = 0; r < 3; ++r) {
+            A.row(r) = 2.0 * (p[others[r]] - p[a]).transpose();
+            rhs(r) = p[others[r]].squaredNorm() - p[a].squaredNorm();
+          }
+          const Eigen::Vector3d centre = A.partialPivLu().solve(rhs);
+          const double radius2 = (p[a] - centre).squaredNorm();
+          bool empty = true;
+          for (int k = 0; k < n && empty; ++k) {
+            if (k != a && k != b && k != c && k != d) {
+              empty = (p[k] - centre).squaredNorm() > radius2;
+            }
+          }
+          if (!empty) continue;
+          const int v[4] = {a, b, c, d};
+          for (int i = 0; i < 4; ++i) {
+            for (int j = i + 1; j < 4; ++j) edges.push_back(GraphEdge{v[i], v[j]});
+          }
+        }
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+TEST(PointGraph, EdgesAreThoseOfTheEmptyCircumsphereTetrahedra) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int n : {5, 12, 30}) {
+    std::vector<Eigen::Vector3d> points(n);
+    for (auto& p : points) p = Eigen::Vector3d(u(rng), u(rng), 0.3 * u(rng));
+    const std::vector<GraphEdge> edges = BuildDelaunayGraph(points);
+    const std::vector<GraphEdge> expected = BruteForceDelaunayEdges(points);
+    ASSERT_EQ(edges.size(), expected.size()) << n << " points";
+    for (size_t k = 0; k < edges.size(); ++k) {
+      EXPECT_EQ(edges[k].i, expected[k].i);
+      EXPECT_EQ(edges[k].j, expected[k].j);
+    }
+  }
+}
+
+TEST(PointGraph, LargeCloudHasTheSameDensity) {  // above 4096 points: the other edge collection
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Vector3d> points(5000);
+  for (auto& p : points) p = Eigen::Vector3d(u(rng), u(rng), u(rng));
+  const auto edges = BuildDelaunayGraph(points);
+  EXPECT_TRUE(std::is_sorted(edges.begin(), edges.end()));
+  EXPECT_EQ(std::adjacent_find(edges.begin(), edges.end()), edges.end());
+  const auto component = ConnectedComponents(5000, edges, {});
+  for (int c : component) ASSERT_EQ(c, 0);
+  const double mean_degree = 2.0 * edges.size() / points.size();
+  EXPECT_GT(mean_degree, 13.0);
   EXPECT_LT(mean_degree, 16.0);
 }
 
