@@ -111,16 +111,17 @@ bool RasterOrder(const cv::KeyPoint& a, const cv::KeyPoint& b) {
 
 // Cells [first, end) of one row of `grid`, with one cv::FAST call over them: its suppression
 // stops where a per-cell call's does except between neighbouring cells of the run, where the
-// cells' inner first and last columns are tested again.
+// cells' inner first and last columns are tested again. `maxima` is scratch space (kept
+// between the calls of one FastPerCell for its capacity).
 void FastOnRun(const cv::Mat& image, const FastGrid& grid, int first, int end, int threshold,
-               std::vector<std::vector<cv::KeyPoint>>* cells) {
+               std::vector<cv::KeyPoint>* maxima, std::vector<std::vector<cv::KeyPoint>>* cells) {
   const cv::Rect left = grid.Cell(first), right = grid.Cell(end - 1);
   const cv::Rect strip(left.x - kMargin, left.y - kMargin, right.br().x - left.x + 2 * kMargin,
                        left.height + 2 * kMargin);
-  std::vector<cv::KeyPoint> maxima;
-  cv::FAST(image(strip), maxima, threshold, true);
+  maxima->clear();
+  cv::FAST(image(strip), *maxima, threshold, true);
   const int row_start = first - first % grid.Cols();
-  for (cv::KeyPoint& kp : maxima) {
+  for (cv::KeyPoint& kp : *maxima) {
     kp.pt += cv::Point2f(static_cast<float>(strip.x), static_cast<float>(strip.y));
     const int x = static_cast<int>(kp.pt.x);
     const int index = row_start + (x - grid.x0) / grid.size;
@@ -175,6 +176,7 @@ std::vector<std::vector<cv::KeyPoint>> FastPerCell(const cv::Mat& image, const F
     throw std::invalid_argument("FastPerCell: one `wanted` entry per cell");
   }
   std::vector<std::vector<cv::KeyPoint>> cells(count);
+  std::vector<cv::KeyPoint> maxima;
   for (int row = 0; row < grid.Rows(); ++row) {
     const int row_end = (row + 1) * grid.Cols();
     for (int first = row * grid.Cols(); first < row_end;) {
@@ -184,7 +186,7 @@ std::vector<std::vector<cv::KeyPoint>> FastPerCell(const cv::Mat& image, const F
       }
       int end = first + 1;
       while (end < row_end && (wanted == nullptr || (*wanted)[end])) ++end;
-      FastOnRun(image, grid, first, end, threshold, &cells);
+      FastOnRun(image, grid, first, end, threshold, &maxima, &cells);
       first = end;
     }
   }
