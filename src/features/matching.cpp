@@ -74,8 +74,8 @@ int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const Fea
                   const ProjectionSearchOptions& options, int* best_distance) {
   const bool octave_known =
       p.predicted_octave >= 0 && p.predicted_octave < static_cast<int>(frame.octave_scale.size());
-  const double radius =
-      options.radius_px * (octave_known ? frame.octave_scale[p.predicted_octave] : 1.0);
+  const double radius_px = p.radius_px > 0.0 ? p.radius_px : options.radius_px;
+  const double radius = radius_px * (octave_known ? frame.octave_scale[p.predicted_octave] : 1.0);
   int best = std::numeric_limits<int>::max(), second = best, best_index = -1;
   grid.ForEachNear(p.uv_ideal, radius, [&](int i) {
     const Feature& f = frame.features[i];
@@ -83,6 +83,10 @@ int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const Fea
       return;
     }
     if ((f.uv_ideal - p.uv_ideal).squaredNorm() > radius * radius) return;
+    if (p.max_offset_m > 0.0 && f.measurement &&
+        (f.measurement->y_camera - p.p_camera).squaredNorm() > p.max_offset_m * p.max_offset_m) {
+      return;
+    }
     const int d = Hamming(p.descriptor.ptr<uchar>(0), frame.descriptors.ptr<uchar>(i));
     if (d < best) {
       second = best;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include "dslam/features/matching.h"
 
 namespace dslam {
 namespace {
@@ -22,43 +21,62 @@ int PredictOctave(const MapPoint& point, double distance_m, const std::vector<do
 
 }  // namespace
 
-std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
-                                      const FrameFeatures& features, const PinholeCamera& camera,
-                                      const Eigen::Isometry3d& T_camera_world, double radius_px,
-                                      double min_depth_m, bool count_visible,
-                                      std::vector<bool>* feature_taken) {
-  std::vector<ProjectedPoint> projected;
-  std::vector<PointId> projected_ids;
-  projected.reserve(candidates.size());
-  projected_ids.reserve(candidates.size());
+ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& candidates,
+                                  const FrameFeatures& features, const PinholeCamera& camera,
+                                  const Eigen::Isometry3d& T_camera_world,
+                                  const LocalMapSearch& search) {
+  ProjectedLocalMap projected;
+  projected.points.reserve(candidates.size());
+  projected.ids.reserve(candidates.size());
   const std::vector<double>& scales = features.octave_scale;
   const double log_scale = scales.size() < 2 ? 0.0 : std::log(scales[1]);
   for (PointId id : candidates) {
-    MapPoint* point = map->Find(id);
+    const MapPoint* point = map.Find(id);
     if (point == nullptr) continue;
     const Eigen::Vector3d p_camera = T_camera_world * point->p_world;
-    if (p_camera.z() < min_depth_m) continue;
+    if (p_camera.z() < search.min_depth_m) continue;
     const Eigen::Vector2d uv = camera.Project(p_camera);
     if (!camera.InImage(uv)) continue;
-    if (count_visible) ++point->times_visible;
     ProjectedPoint candidate;
     candidate.uv_ideal = uv;
     candidate.descriptor = point->descriptor;
     candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), scales, log_scale);
-    projected.push_back(std::move(candidate));
-    projected_ids.push_back(id);
+    candidate.radius_px = point->marked ? search.radius_px : search.unmarked_radius_px;
+    if (!point->marked) {
+      candidate.max_offset_m = search.unmarked_max_offset_m;
+      candidate.p_camera = p_camera;
+    }
+    projected.points.push_back(std::move(candidate));
+    projected.ids.push_back(id);
   }
-  ProjectionSearchOptions options;
-  options.radius_px = radius_px;
-  const std::vector<int> found = SearchByProjection(projected, features, options);
+  return projected;
+}
+
+std::vector<PointMatch> ClaimLocalMapMatches(const ProjectedLocalMap& projected,
+                                             const FrameFeatures& features,
+                                             std::vector<bool>* feature_taken) {
+  const std::vector<int> found = SearchByProjection(projected.points, features);
   std::vector<PointMatch> matches;
   for (size_t k = 0; k < found.size(); ++k) {
     const int f = found[k];
     if (f < 0 || (*feature_taken)[f]) continue;
     (*feature_taken)[f] = true;
-    matches.push_back({projected_ids[k], f});
+    matches.push_back({projected.ids[k], f});
   }
   return matches;
+}
+
+std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
+                                      const FrameFeatures& features, const PinholeCamera& camera,
+                                      const Eigen::Isometry3d& T_camera_world,
+                                      const LocalMapSearch& search,
+                                      std::vector<bool>* feature_taken) {
+  const ProjectedLocalMap projected =
+      ProjectLocalMap(*map, candidates, features, camera, T_camera_world, search);
+  if (search.count_visible) {
+    for (PointId id : projected.ids) ++map->Find(id)->times_visible;
+  }
+  return ClaimLocalMapMatches(projected, features, feature_taken);
 }
 
 }  // namespace dslam

@@ -148,7 +148,7 @@ bool Odometry::Relocalise(Current* current, int frame_index) {
   current->feature_taken.assign(current->features.features.size(), false);
   current->matches =
       MatchLocalMap(&map_, current->local_points, current->features, *current->frame->camera,
-                    found.T_camera_world, cfg.search_radius_px, cfg.search_min_depth_m, false,
+                    found.T_camera_world, SearchWithin(cfg.search_radius_px, false),
                     &current->feature_taken);
   if (!SolveInitialPose(current, found.T_camera_world, frame_index)) return false;
   current->relocalisation_inliers = found.num_inliers;

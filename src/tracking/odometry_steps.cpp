@@ -16,8 +16,8 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
   current->local_points = map_.LocalPoints(last_tracked_, StaticSeenSinceFrame());
   const std::vector<PointId>& local = current->local_points;
   const double radius = wide ? cfg.wide_search_radius_px : cfg.search_radius_px;
-  current->matches = MatchLocalMap(&map_, local, current->features, camera, T_camera_world, radius,
-                                   cfg.search_min_depth_m, true, &current->feature_taken);
+  current->matches = MatchLocalMap(&map_, local, current->features, camera, T_camera_world,
+                                   SearchWithin(radius, true), &current->feature_taken);
   if (static_cast<int>(current->matches.size()) >= cfg.min_matches || wide) return;
   // Too few: the prediction was off (sudden motion). Search the rest with a wide radius.
   MatchUnmatchedLocalPoints(current, T_camera_world, cfg.wide_search_radius_px);
@@ -26,22 +26,33 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
 void Odometry::MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                          double radius_px) {
   const std::vector<PointMatch> more =
-      UnmatchedLocalPointMatches(*current, T_camera_world, radius_px, &current->feature_taken);
+      ClaimLocalMapMatches(ProjectUnmatchedLocalPoints(*current, T_camera_world,
+                                                       SearchWithin(radius_px, false)),
+                           current->features, &current->feature_taken);
   current->matches.insert(current->matches.end(), more.begin(), more.end());
 }
 
-std::vector<PointMatch> Odometry::UnmatchedLocalPointMatches(
-    const Current& current, const Eigen::Isometry3d& T_camera_world, double radius_px,
-    std::vector<bool>* feature_taken) {
+ProjectedLocalMap Odometry::ProjectUnmatchedLocalPoints(const Current& current,
+                                                        const Eigen::Isometry3d& T_camera_world,
+                                                        const LocalMapSearch& search) const {
   std::unordered_set<PointId> matched;
   for (const PointMatch& m : current.matches) matched.insert(m.id);
   std::vector<PointId> rest;
   for (PointId id : current.local_points) {
     if (!matched.count(id)) rest.push_back(id);
   }
-  // count_visible = false: MatchLocalMap then writes no map point.
-  return MatchLocalMap(&map_, rest, current.features, *current.frame->camera, T_camera_world,
-                       radius_px, config_.tracking.search_min_depth_m, false, feature_taken);
+  return ProjectLocalMap(map_, rest, current.features, *current.frame->camera,
+                         T_camera_world, search);
+}
+
+LocalMapSearch Odometry::SearchWithin(double radius_px, bool count_visible) const {
+  LocalMapSearch search;
+  search.radius_px = radius_px;
+  search.unmarked_radius_px = std::max(radius_px, config_.tracking.unmarked_search_radius_px);
+  search.unmarked_max_offset_m = config_.tracking.unmarked_max_offset_m;
+  search.min_depth_m = config_.tracking.search_min_depth_m;
+  search.count_visible = count_visible;
+  return search;
 }
 
 bool Odometry::EnoughInliers(const PoseResult& pose) const {
@@ -108,16 +119,17 @@ std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const 
 
 void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
   // The search needs the initial pose and the matches so far, not the labels; the labelling
-  // writes only points' labels, which the search does not read (see MatchLocalMap). The search
-  // works on a copy of feature_taken, which the labelling does not read either.
+  // writes only points' labels, which the search does not read: the points (with their radii
+  // from the labels before this frame's) are projected before both start. The search works on
+  // a copy of feature_taken, which the labelling does not read either.
+  const TrackingConfig& cfg = config_.tracking;
+  const ProjectedLocalMap rest = ProjectUnmatchedLocalPoints(
+      *current, current->T_camera_world,
+      SearchWithin(cfg.search_radius_px, false));
   std::vector<PointMatch> more;
   std::vector<bool> taken = current->feature_taken;
-  RunSideBySide(
-      [&] {
-        more = UnmatchedLocalPointMatches(*current, current->T_camera_world,
-                                          config_.tracking.search_radius_px, &taken);
-      },
-      [&] { DetermineFrontEndLabels(current, result); });
+  RunSideBySide([&] { more = ClaimLocalMapMatches(rest, current->features, &taken); },
+                [&] { DetermineFrontEndLabels(current, result); });
   current->feature_taken = std::move(taken);
   current->matches.insert(current->matches.end(), more.begin(), more.end());
   current->excluded.resize(current->matches.size(), false);  // new matches: not yet judged

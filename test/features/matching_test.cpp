@@ -69,6 +69,46 @@ TEST(Matching, SearchByProjectionFindsKnownCorrespondences) {
   EXPECT_EQ(SearchByProjection(points, frame)[0], 0);
 }
 
+TEST(Matching, PerPointRadiusOverridesTheOptions) {
+  std::mt19937 rng(5);
+  const FrameFeatures frame = GridFrame(&rng);
+  ProjectedPoint p;
+  p.uv_ideal = frame.features[0].uv_ideal + Eigen::Vector2d(12.0, 0.0);
+  p.descriptor = frame.descriptors.row(0).clone();
+  p.predicted_octave = 0;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], -1);  // 12 px > the options' 7 px
+  p.radius_px = 12.5;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
+  p.radius_px = 11.5;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], -1);
+  // At octave 1 the point's radius is scaled like the options' one: 11.5 * 1.2 > 12 px.
+  p.predicted_octave = 1;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
+}
+
+TEST(Matching, MaxOffsetSkipsCandidatesMeasuredFarFromThePrediction) {
+  std::mt19937 rng(6);
+  FrameFeatures frame = GridFrame(&rng);
+  PointMeasurement at_2m;
+  at_2m.y_camera = Eigen::Vector3d(0.1, 0.2, 2.0);
+  at_2m.covariance = Eigen::Matrix3d::Identity() * 1e-4;
+  frame.features[0].measurement = at_2m;
+  ProjectedPoint p;
+  p.uv_ideal = frame.features[0].uv_ideal;
+  p.descriptor = frame.descriptors.row(0).clone();
+  p.p_camera = Eigen::Vector3d(0.1, 0.2, 2.25);  // 0.25 m in front of the measurement
+  p.max_offset_m = 0.3;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
+  p.max_offset_m = 0.2;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], -1);
+  p.max_offset_m = 0.0;  // no test
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
+  // A candidate without depth is not tested.
+  frame.features[0].measurement.reset();
+  p.max_offset_m = 0.2;
+  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
+}
+
 TEST(Matching, RatioTestAndUniqueness) {
   std::mt19937 rng(4);
   FrameFeatures frame = GridFrame(&rng);

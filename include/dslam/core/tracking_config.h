@@ -14,6 +14,8 @@ struct TrackingConfig {
   int window_keyframes = 12;
   double search_radius_px = 10.0;
   double wide_search_radius_px = 30.0;
+  double unmarked_search_radius_px = 10.0;
+  double unmarked_max_offset_m = 0.0;
   double search_min_depth_m = 0.1;
   int min_matches = 40;
   int min_static_inliers = 20;
@@ -62,6 +64,15 @@ struct TrackingConfig {
     v(Field("wide_search_radius_px", "px", 1.0, 400.0,
             "search radius when the narrow search finds too few matches"),
       s.wide_search_radius_px);
+    // Unmarked points move on their own, which the camera's predicted pose does not include
+    // (MatchLocalMap, local_map_matching.h).
+    v(Field("unmarked_search_radius_px", "px", 1.0, 400.0,
+            "projection search radius (octave 0) of unmarked points; at least the marked one's"),
+      s.unmarked_search_radius_px);
+    v(Field("unmarked_max_offset_m", "m", 0.0, 100.0,
+            "an unmarked point matches only features measured this near its last position, "
+            "moved with the camera (0: no test)"),
+      s.unmarked_max_offset_m);
     // The near plane of MatchLocalMap (local_map_matching.h); the bound keeps points off z = 0.
     v(Field("search_min_depth_m", "m", 0.001, 100.0,
             "map points nearer than this along the optical axis are not projected or searched"),

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "dslam/features/features.h"
+#include "dslam/features/matching.h"
 #include "dslam/tracking/map.h"
 
 namespace dslam {
@@ -18,16 +19,50 @@ struct PointMatch {
   int feature = -1;  ///< index into FrameFeatures::features
 };
 
-/// Projects the map points `candidates` into the frame with `T_camera_world`, and searches each
-/// projected point's best feature within `radius_px` (scaled by the feature octave) among the
-/// features not yet in `feature_taken`. Matched features are marked taken. Points closer than
-/// `min_depth_m` [m] along the optical axis (so also points behind the camera) or outside the
-/// image are skipped; when `count_visible`, every point that projects into the image has
-/// times_visible incremented (the found ratio used by map culling).
+/// How MatchLocalMap searches.
+struct LocalMapSearch {
+  double radius_px = 10.0;  ///< [px] search radius at octave 0 of marked points
+  /// [px] search radius at octave 0 of unmarked points: they move on their own, so the camera's
+  /// prediction places them less well.
+  double unmarked_radius_px = 10.0;
+  /// [m] an unmarked point matches only features whose depth measurement lies within this of its
+  /// predicted position (or that have none); 0: no such test.
+  double unmarked_max_offset_m = 0.0;
+  /// [m] points nearer than this along the optical axis (so also points behind the camera) are
+  /// skipped.
+  double min_depth_m = 0.1;
+  /// MatchLocalMap increments times_visible of every point that projects into the image (the found
+  /// ratio used by map culling); otherwise it writes no map point.
+  bool count_visible = false;
+};
+
+/// Map points projected into a frame, ready for ClaimLocalMapMatches.
+struct ProjectedLocalMap {
+  std::vector<ProjectedPoint> points;  ///< projections with their radii and descriptors
+  std::vector<PointId> ids;            ///< the map point of each element of `points`
+};
+
+/// Projects the map points `candidates` into the frame with `T_camera_world`, each with its
+/// search radius from `search` (by the point's `marked`). Points outside the image are skipped;
+/// search.count_visible is not read here (see MatchLocalMap).
+ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& candidates,
+                                  const FrameFeatures& features, const PinholeCamera& camera,
+                                  const Eigen::Isometry3d& T_camera_world,
+                                  const LocalMapSearch& search);
+
+/// Searches each projected point's best feature within its radius (scaled by the feature octave)
+/// among the features not yet in `feature_taken`; matched features are marked taken. Reads no map
+/// point.
+std::vector<PointMatch> ClaimLocalMapMatches(const ProjectedLocalMap& projected,
+                                             const FrameFeatures& features,
+                                             std::vector<bool>* feature_taken);
+
+/// ProjectLocalMap, then (when search.count_visible) times_visible incremented for every projected
+/// point, then ClaimLocalMapMatches.
 std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
                                       const FrameFeatures& features, const PinholeCamera& camera,
-                                      const Eigen::Isometry3d& T_camera_world, double radius_px,
-                                      double min_depth_m, bool count_visible,
+                                      const Eigen::Isometry3d& T_camera_world,
+                                      const LocalMapSearch& search,
                                       std::vector<bool>* feature_taken);
 
 }  // namespace dslam

@@ -84,12 +84,14 @@ class Odometry {
                                        const Eigen::Isometry3d& T_camera_world) const;
   void MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                  double radius_px);
-  /// Matches of the local points not yet matched (projected with `T_camera_world`) to features
-  /// not yet taken; marks the features taken. Reads the map only (no point is written).
-  std::vector<PointMatch> UnmatchedLocalPointMatches(const Current& current,
-                                                     const Eigen::Isometry3d& T_camera_world,
-                                                     double radius_px,
-                                                     std::vector<bool>* feature_taken);
+  /// The local points not yet matched, projected with `T_camera_world` for `search`. Reads the
+  /// map only (no point is written).
+  ProjectedLocalMap ProjectUnmatchedLocalPoints(const Current& current,
+                                                const Eigen::Isometry3d& T_camera_world,
+                                                const LocalMapSearch& search) const;
+  /// The local-map search with `radius_px` [px] for marked points and at least
+  /// tracking.unmarked_search_radius_px for unmarked ones (with tracking.unmarked_max_offset_m).
+  LocalMapSearch SearchWithin(double radius_px, bool count_visible) const;
   /// Pose from static points (verified, else marked) starting at `T_camera_world_guess`; when
   /// they give too few inliers, a RANSAC pose over all matches. Sets current->pose and, on
   /// success, current->T_camera_world. False: too few inliers either way.
