@@ -28,7 +28,16 @@ void ResolveConflicts(const std::vector<int>& distances, int num_train, std::vec
   }
 }
 
-// Features bucketed by their ideal pixel position, so a radius search visits few of them.
+// What the radius search reads of a feature, stored by cell so that a search reads memory in
+// order and touches FrameFeatures only for the candidates it compares.
+struct GridEntry {
+  double u = 0.0, v = 0.0;  // [px] uv_ideal
+  int octave = 0;
+  int index = 0;            // into frame.features
+};
+
+// Features bucketed by their ideal pixel position, so a radius search visits few of them. The
+// cells are one flat array (each cell's entries in feature order) with offsets per cell.
 class FeatureGrid {
  public:
   explicit FeatureGrid(const FrameFeatures& frame) {
@@ -39,15 +48,24 @@ class FeatureGrid {
     }
     cols_ = static_cast<int>(max_u / kCellPx) + 1;
     rows_ = static_cast<int>(max_v / kCellPx) + 1;
-    cells_.resize(static_cast<size_t>(cols_) * rows_);
+    std::vector<size_t> cell_of(frame.features.size());
+    offsets_.assign(static_cast<size_t>(cols_) * rows_ + 1, 0);
     for (size_t i = 0; i < frame.features.size(); ++i) {
       const Eigen::Vector2d& uv = frame.features[i].uv_ideal;
-      cells_[Cell(Clamp(uv.x() / kCellPx, cols_), Clamp(uv.y() / kCellPx, rows_))].push_back(
-          static_cast<int>(i));
+      cell_of[i] = Cell(Clamp(uv.x() / kCellPx, cols_), Clamp(uv.y() / kCellPx, rows_));
+      ++offsets_[cell_of[i] + 1];
+    }
+    for (size_t c = 1; c < offsets_.size(); ++c) offsets_[c] += offsets_[c - 1];
+    entries_.resize(frame.features.size());
+    std::vector<size_t> next(offsets_.begin(), offsets_.end() - 1);
+    for (size_t i = 0; i < frame.features.size(); ++i) {
+      const Feature& f = frame.features[i];
+      entries_[next[cell_of[i]]++] = {f.uv_ideal.x(), f.uv_ideal.y(), f.octave,
+                                      static_cast<int>(i)};
     }
   }
 
-  // Calls f(index) for every feature in the cells overlapping the square around uv.
+  // Calls f(entry) for every feature in the cells overlapping the square around uv.
   template <typename F>
   void ForEachNear(const Eigen::Vector2d& uv, double radius, F&& f) const {
     const int c0 = Clamp((uv.x() - radius) / kCellPx, cols_);
@@ -55,9 +73,9 @@ class FeatureGrid {
     const int r0 = Clamp((uv.y() - radius) / kCellPx, rows_);
     const int r1 = Clamp((uv.y() + radius) / kCellPx, rows_);
     for (int r = r0; r <= r1; ++r) {
-      for (int c = c0; c <= c1; ++c) {
-        for (int i : cells_[Cell(c, r)]) f(i);
-      }
+      // The cells c0..c1 of a row are adjacent in entries_.
+      const size_t end = offsets_[Cell(c1, r) + 1];
+      for (size_t e = offsets_[Cell(c0, r)]; e < end; ++e) f(entries_[e]);
     }
   }
 
@@ -66,7 +84,8 @@ class FeatureGrid {
   static int Clamp(double x, int n) { return std::clamp(static_cast<int>(x), 0, n - 1); }
   size_t Cell(int c, int r) const { return static_cast<size_t>(r) * cols_ + c; }
   int cols_ = 1, rows_ = 1;
-  std::vector<std::vector<int>> cells_;
+  std::vector<size_t> offsets_;    // cell k holds entries_[offsets_[k], offsets_[k + 1])
+  std::vector<GridEntry> entries_;
 };
 
 // Best feature index for one projected point, or -1; writes its distance.
@@ -76,22 +95,27 @@ int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const Fea
       p.predicted_octave >= 0 && p.predicted_octave < static_cast<int>(frame.octave_scale.size());
   const double radius_px = p.radius_px > 0.0 ? p.radius_px : options.radius_px;
   const double radius = radius_px * (octave_known ? frame.octave_scale[p.predicted_octave] : 1.0);
+  const double radius2 = radius * radius;
+  const uchar* descriptor = p.descriptor.ptr<uchar>(0);
   int best = std::numeric_limits<int>::max(), second = best, best_index = -1;
-  grid.ForEachNear(p.uv_ideal, radius, [&](int i) {
-    const Feature& f = frame.features[i];
-    if (octave_known && std::abs(f.octave - p.predicted_octave) > options.octave_tolerance) {
+  grid.ForEachNear(p.uv_ideal, radius, [&](const GridEntry& e) {
+    if (octave_known && std::abs(e.octave - p.predicted_octave) > options.octave_tolerance) {
       return;
     }
-    if ((f.uv_ideal - p.uv_ideal).squaredNorm() > radius * radius) return;
-    if (p.max_offset_m > 0.0 && f.measurement &&
-        (f.measurement->y_camera - p.p_camera).squaredNorm() > p.max_offset_m * p.max_offset_m) {
-      return;
+    const double du = e.u - p.uv_ideal.x(), dv = e.v - p.uv_ideal.y();
+    if (du * du + dv * dv > radius2) return;
+    if (p.max_offset_m > 0.0) {
+      const auto& measurement = frame.features[e.index].measurement;
+      if (measurement && (measurement->y_camera - p.p_camera).squaredNorm() >
+                             p.max_offset_m * p.max_offset_m) {
+        return;
+      }
     }
-    const int d = Hamming(p.descriptor.ptr<uchar>(0), frame.descriptors.ptr<uchar>(i));
+    const int d = Hamming(descriptor, frame.descriptors.ptr<uchar>(e.index));
     if (d < best) {
       second = best;
       best = d;
-      best_index = i;
+      best_index = e.index;
     } else if (d < second) {
       second = d;
     }
