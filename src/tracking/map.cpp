@@ -1,9 +1,9 @@
 #include "dslam/tracking/map.h"
 
 #include <algorithm>
-#include <unordered_set>
 
 #include "dslam/features/matching.h"
+#include "dslam/tracking/id_set.h"
 
 namespace dslam {
 
@@ -65,12 +65,12 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
   size_t bound = extra.size();
   for (const KeyFrame& kf : keyframes_) bound += kf.points.size();
   if (static_seen_since_frame >= 0) bound += points_.size();
-  std::unordered_set<PointId> seen;
-  seen.reserve(bound);
+  IdSet seen(bound);
   std::vector<PointId> local;
   local.reserve(bound);
+  // An id not in the map is remembered too: its later occurrences are skipped without a lookup.
   auto add = [&](PointId id) {
-    if (points_.count(id) && seen.insert(id).second) local.push_back(id);
+    if (seen.Insert(id) && points_.count(id)) local.push_back(id);
   };
   for (const KeyFrame& kf : keyframes_) {
     for (PointId id : kf.points) add(id);
@@ -85,15 +85,19 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
 
 int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
               int static_seen_since_frame) {
-  std::unordered_set<PointId> in_window;
-  for (const KeyFrame& kf : keyframes_) in_window.insert(kf.points.begin(), kf.points.end());
+  size_t window_points = 0;
+  for (const KeyFrame& kf : keyframes_) window_points += kf.points.size();
+  IdSet in_window(window_points);
+  for (const KeyFrame& kf : keyframes_) {
+    for (PointId id : kf.points) in_window.Insert(id);
+  }
   int removed = 0;
   for (auto it = points_.begin(); it != points_.end();) {
     const MapPoint& p = it->second;
     const int keep_since = static_seen_since_frame >= 0 && p.IsVerifiedStatic()
                                ? std::min(oldest_frame_to_keep, static_seen_since_frame)
                                : oldest_frame_to_keep;
-    const bool stale = p.last_seen_frame < keep_since && !in_window.count(p.id);
+    const bool stale = p.last_seen_frame < keep_since && !in_window.Contains(p.id);
     const bool unreliable =
         p.times_visible >= min_visible && p.times_found < min_found_ratio * p.times_visible;
     if (stale || unreliable) {

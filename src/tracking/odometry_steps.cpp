@@ -1,8 +1,8 @@
 // The steps of Odometry::ProcessFrame (odometry.cpp), one function each.
 #include <algorithm>
 #include <string>
-#include <unordered_set>
 
+#include "dslam/tracking/id_set.h"
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/odometry.h"
 #include "side_by_side.h"
@@ -35,11 +35,11 @@ void Odometry::MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry
 ProjectedLocalMap Odometry::ProjectUnmatchedLocalPoints(const Current& current,
                                                         const Eigen::Isometry3d& T_camera_world,
                                                         const LocalMapSearch& search) const {
-  std::unordered_set<PointId> matched;
-  for (const PointMatch& m : current.matches) matched.insert(m.id);
+  IdSet matched(current.matches.size());
+  for (const PointMatch& m : current.matches) matched.Insert(m.id);
   std::vector<PointId> rest;
   for (PointId id : current.local_points) {
-    if (!matched.count(id)) rest.push_back(id);
+    if (!matched.Contains(id)) rest.push_back(id);
   }
   return ProjectLocalMap(map_, rest, current.features, *current.frame->camera,
                          T_camera_world, search);
