@@ -57,8 +57,11 @@ Eigen::Vector2d PinholeCamera::Undistort(const Eigen::Vector2d& uv_distorted) co
     const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
     const double dx = 2.0 * d.p1 * x * y + d.p2 * (r2 + 2.0 * x * x);
     const double dy = d.p1 * (r2 + 2.0 * y * y) + 2.0 * d.p2 * x * y;
-    x = (xd - dx) / radial;
-    y = (yd - dy) / radial;
+    const double x_next = (xd - dx) / radial, y_next = (yd - dy) / radial;
+    // A fixed point: every further iteration would return the same values.
+    if (x_next == x && y_next == y) break;
+    x = x_next;
+    y = y_next;
   }
   return {fx_ * x + cx_, fy_ * y + cy_};
 }

@@ -45,6 +45,45 @@ TEST(PinholeCamera, UndistortInvertsDistort) {
   }
 }
 
+// The fixed-point iteration Undistort implements, always run 20 times.
+Eigen::Vector2d UndistortTwentyIterations(const PinholeCamera& camera, const Distortion& d,
+                                          const Eigen::Vector2d& uv) {
+  const double xd = (uv.x() - camera.cx()) / camera.fx();
+  const double yd = (uv.y() - camera.cy()) / camera.fy();
+  double x = xd, y = yd;
+  for (int i = 0; i < 20; ++i) {
+    const double r2 = x * x + y * y;
+    const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
+    const double dx = 2.0 * d.p1 * x * y + d.p2 * (r2 + 2.0 * x * x);
+    const double dy = d.p1 * (r2 + 2.0 * y * y) + 2.0 * d.p2 * x * y;
+    x = (xd - dx) / radial;
+    y = (yd - dy) / radial;
+  }
+  return {camera.fx() * x + camera.cx(), camera.fy() * y + camera.cy()};
+}
+
+TEST(PinholeCamera, UndistortStopsAtAFixedPointWithTheSameResult) {
+  Distortion strong;
+  strong.k1 = -0.28;
+  strong.k2 = 0.07;
+  strong.p1 = 0.001;
+  strong.p2 = -0.0012;
+  strong.k3 = 0.01;
+  const Distortion bonn = BonnLikeCamera().distortion();
+  for (const Distortion& d : {bonn, strong}) {
+    const PinholeCamera camera(640, 480, 542.8, 542.6, 315.6, 237.8, d);
+    for (double u = 0.0; u < 640.0; u += 7.3) {
+      for (double v = 0.0; v < 480.0; v += 5.9) {
+        const Eigen::Vector2d uv(u, v);
+        const Eigen::Vector2d expected = UndistortTwentyIterations(camera, d, uv);
+        const Eigen::Vector2d got = camera.Undistort(uv);
+        ASSERT_EQ(got.x(), expected.x()) << u << " " << v;
+        ASSERT_EQ(got.y(), expected.y()) << u << " " << v;
+      }
+    }
+  }
+}
+
 TEST(PinholeCamera, DistortionMovesCornersNotCentre) {
   const PinholeCamera camera = BonnLikeCamera();
   const Eigen::Vector2d centre(camera.cx(), camera.cy());
