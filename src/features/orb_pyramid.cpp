@@ -164,29 +164,64 @@ std::vector<std::vector<cv::KeyPoint>> DetectLevelKeypoints(const std::vector<cv
 
 }  // namespace orb
 
-float IntensityCentroidAngle(const cv::Mat& level, const cv::Point2f& pt) {
-  if (level.type() != CV_8UC1) throw std::invalid_argument("IntensityCentroidAngle: not CV_8UC1");
+namespace {
+
+// Moments m10, m01 of the disc of orb::kPatchRadius around (cx, cy), which lies inside `level`:
+// the rows dy and -dy together (their sum weighs dx, their difference dy), as ORB-SLAM2 does.
+void DiscMomentsInside(const cv::Mat& level, int cx, int cy, long* m10, long* m01) {
   constexpr int kRadius = orb::kPatchRadius;
-  const int cx = cvRound(pt.x), cy = cvRound(pt.y);
-  const bool inside =
-      cx >= kRadius && cy >= kRadius && cx + kRadius < level.cols && cy + kRadius < level.rows;
   const std::array<int, 2 * kRadius + 1>& half_widths = orb::DiscHalfWidths();
-  long m01 = 0, m10 = 0;  // integer moments: exact
+  const uchar* centre = level.ptr<uchar>(cy) + cx;
+  for (int dx = -kRadius; dx <= kRadius; ++dx) *m10 += dx * centre[dx];
+  const size_t step = level.step1();
+  for (int dy = 1; dy <= kRadius; ++dy) {
+    const int half = half_widths[dy + kRadius];
+    const uchar* below = centre + dy * step;
+    const uchar* above = centre - dy * step;
+    int row_moment = 0, row_difference = 0;
+    for (int dx = -half; dx <= half; ++dx) {
+      row_moment += dx * (below[dx] + above[dx]);
+      row_difference += below[dx] - above[dx];
+    }
+    *m10 += row_moment;
+    *m01 += static_cast<long>(dy) * row_difference;
+  }
+}
+
+// The same moments for a disc crossing the border of `level`: each row clipped to the image.
+void DiscMomentsClipped(const cv::Mat& level, int cx, int cy, long* m10, long* m01) {
+  constexpr int kRadius = orb::kPatchRadius;
+  const std::array<int, 2 * kRadius + 1>& half_widths = orb::DiscHalfWidths();
   for (int dy = -kRadius; dy <= kRadius; ++dy) {
     const int y = cy + dy;
     if (y < 0 || y >= level.rows) continue;
     const int half = half_widths[dy + kRadius];
-    // The disc's part of the row, clipped to the image when the disc crosses its border.
-    const int x0 = inside ? -half : std::max(-half, -cx);
-    const int x1 = inside ? half : std::min(half, level.cols - 1 - cx);
+    const int x0 = std::max(-half, -cx);
+    const int x1 = std::min(half, level.cols - 1 - cx);
     const uchar* row = level.ptr<uchar>(y) + cx;
     int row_sum = 0, row_moment = 0;
     for (int dx = x0; dx <= x1; ++dx) {
       row_sum += row[dx];
       row_moment += dx * row[dx];
     }
-    m10 += row_moment;
-    m01 += static_cast<long>(dy) * row_sum;
+    *m10 += row_moment;
+    *m01 += static_cast<long>(dy) * row_sum;
+  }
+}
+
+}  // namespace
+
+float IntensityCentroidAngle(const cv::Mat& level, const cv::Point2f& pt) {
+  if (level.type() != CV_8UC1) throw std::invalid_argument("IntensityCentroidAngle: not CV_8UC1");
+  constexpr int kRadius = orb::kPatchRadius;
+  const int cx = cvRound(pt.x), cy = cvRound(pt.y);
+  const bool inside =
+      cx >= kRadius && cy >= kRadius && cx + kRadius < level.cols && cy + kRadius < level.rows;
+  long m01 = 0, m10 = 0;  // integer moments: exact, so both ways give the same sums
+  if (inside) {
+    DiscMomentsInside(level, cx, cy, &m10, &m01);
+  } else {
+    DiscMomentsClipped(level, cx, cy, &m10, &m01);
   }
   const float angle = static_cast<float>(
       std::atan2(static_cast<double>(m01), static_cast<double>(m10)) * 180.0 / CV_PI);

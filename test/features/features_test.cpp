@@ -120,6 +120,40 @@ TEST(Features, IntensityCentroidPointsUpTheGradient) {
                std::invalid_argument);
 }
 
+// The intensity-centroid angle summed row by row over the disc of radius 15 (ORB's patch; the
+// half width of row dy is floor(sqrt(15^2 - dy^2))), each row clipped to the image.
+float ReferenceCentroidAngle(const cv::Mat& level, const cv::Point2f& pt) {
+  constexpr int kRadius = 15;
+  const int cx = cvRound(pt.x), cy = cvRound(pt.y);
+  long m01 = 0, m10 = 0;
+  for (int dy = -kRadius; dy <= kRadius; ++dy) {
+    if (cy + dy < 0 || cy + dy >= level.rows) continue;
+    const int half = static_cast<int>(std::sqrt(kRadius * kRadius - dy * dy));
+    for (int dx = std::max(-half, -cx); dx <= std::min(half, level.cols - 1 - cx); ++dx) {
+      const int value = level.at<uchar>(cy + dy, cx + dx);
+      m10 += dx * value;
+      m01 += dy * value;
+    }
+  }
+  const float angle = static_cast<float>(
+      std::atan2(static_cast<double>(m01), static_cast<double>(m10)) * 180.0 / CV_PI);
+  return angle < 0.0f ? angle + 360.0f : angle;
+}
+
+TEST(Features, IntensityCentroidEqualsTheRowByRowSumsInsideAndAtTheBorder) {
+  std::mt19937 rng(17);
+  cv::Mat image(140, 180, CV_8UC1);
+  cv::randu(image, 0, 256);
+  cv::GaussianBlur(image, image, cv::Size(5, 5), 1.5);  // some structure, not only noise
+  const cv::Mat roi = image(cv::Rect(13, 9, 150, 120));  // a view: step != cols
+  std::uniform_real_distribution<float> u(-2.0f, 151.0f), v(-2.0f, 121.0f);
+  for (int i = 0; i < 3000; ++i) {
+    const cv::Point2f pt(u(rng), v(rng));
+    ASSERT_EQ(IntensityCentroidAngle(roi, pt), ReferenceCentroidAngle(roi, pt))
+        << pt.x << " " << pt.y;
+  }
+}
+
 TEST(Features, DescriptorsFollowARotatedImage) {
   // rBRIEF is steered by the orientation: the features of an image turned by 90 degrees carry
   // nearly the same descriptors as the ones they came from.
