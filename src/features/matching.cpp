@@ -33,7 +33,7 @@ void ResolveConflicts(const std::vector<int>& distances, int num_train, std::vec
 struct GridEntry {
   double u = 0.0, v = 0.0;  // [px] uv_ideal
   int octave = 0;
-  int index = 0;            // into frame.features
+  int index = 0;  // into frame.features
 };
 
 // Features bucketed by their ideal pixel position, so a radius search visits few of them. The
@@ -84,7 +84,7 @@ class FeatureGrid {
   static int Clamp(double x, int n) { return std::clamp(static_cast<int>(x), 0, n - 1); }
   size_t Cell(int c, int r) const { return static_cast<size_t>(r) * cols_ + c; }
   int cols_ = 1, rows_ = 1;
-  std::vector<size_t> offsets_;    // cell k holds entries_[offsets_[k], offsets_[k + 1])
+  std::vector<size_t> offsets_;  // cell k holds entries_[offsets_[k], offsets_[k + 1])
   std::vector<GridEntry> entries_;
 };
 
@@ -106,8 +106,8 @@ int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const Fea
     if (du * du + dv * dv > radius2) return;
     if (p.max_offset_m > 0.0) {
       const auto& measurement = frame.features[e.index].measurement;
-      if (measurement && (measurement->y_camera - p.p_camera).squaredNorm() >
-                             p.max_offset_m * p.max_offset_m) {
+      if (measurement &&
+          (measurement->y_camera - p.p_camera).squaredNorm() > p.max_offset_m * p.max_offset_m) {
         return;
       }
     }

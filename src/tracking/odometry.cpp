@@ -146,10 +146,9 @@ bool Odometry::Relocalise(Current* current, int frame_index) {
   // The local map around the found pose, as if it had been predicted (its points were counted
   // visible at the failed prediction already).
   current->feature_taken.assign(current->features.features.size(), false);
-  current->matches =
-      MatchLocalMap(&map_, current->local_points, current->features, *current->frame->camera,
-                    found.T_camera_world, SearchWithin(cfg.search_radius_px, false),
-                    &current->feature_taken);
+  current->matches = MatchLocalMap(
+      &map_, current->local_points, current->features, *current->frame->camera,
+      found.T_camera_world, SearchWithin(cfg.search_radius_px, false), &current->feature_taken);
   if (!SolveInitialPose(current, found.T_camera_world, frame_index)) return false;
   current->relocalisation_inliers = found.num_inliers;
   current->relocalisation_matches = static_cast<int>(by_descriptor.size());

@@ -25,10 +25,9 @@ void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_
 
 void Odometry::MatchUnmatchedLocalPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                          double radius_px) {
-  const std::vector<PointMatch> more =
-      ClaimLocalMapMatches(ProjectUnmatchedLocalPoints(*current, T_camera_world,
-                                                       SearchWithin(radius_px, false)),
-                           current->features, &current->feature_taken);
+  const std::vector<PointMatch> more = ClaimLocalMapMatches(
+      ProjectUnmatchedLocalPoints(*current, T_camera_world, SearchWithin(radius_px, false)),
+      current->features, &current->feature_taken);
   current->matches.insert(current->matches.end(), more.begin(), more.end());
 }
 
@@ -41,8 +40,8 @@ ProjectedLocalMap Odometry::ProjectUnmatchedLocalPoints(const Current& current,
   for (PointId id : current.local_points) {
     if (!matched.Contains(id)) rest.push_back(id);
   }
-  return ProjectLocalMap(map_, rest, current.features, *current.frame->camera,
-                         T_camera_world, search);
+  return ProjectLocalMap(map_, rest, current.features, *current.frame->camera, T_camera_world,
+                         search);
 }
 
 LocalMapSearch Odometry::SearchWithin(double radius_px, bool count_visible) const {
@@ -124,8 +123,7 @@ void Odometry::RunFrontEndStaticPoints(Current* current, FrameResult* result) {
   // a copy of feature_taken, which the labelling does not read either.
   const TrackingConfig& cfg = config_.tracking;
   const ProjectedLocalMap rest = ProjectUnmatchedLocalPoints(
-      *current, current->T_camera_world,
-      SearchWithin(cfg.search_radius_px, false));
+      *current, current->T_camera_world, SearchWithin(cfg.search_radius_px, false));
   std::vector<PointMatch> more;
   std::vector<bool> taken = current->feature_taken;
   RunSideBySide([&] { more = ClaimLocalMapMatches(rest, current->features, &taken); },

@@ -144,7 +144,7 @@ TEST(Features, IntensityCentroidEqualsTheRowByRowSumsInsideAndAtTheBorder) {
   std::mt19937 rng(17);
   cv::Mat image(140, 180, CV_8UC1);
   cv::randu(image, 0, 256);
-  cv::GaussianBlur(image, image, cv::Size(5, 5), 1.5);  // some structure, not only noise
+  cv::GaussianBlur(image, image, cv::Size(5, 5), 1.5);   // some structure, not only noise
   const cv::Mat roi = image(cv::Rect(13, 9, 150, 120));  // a view: step != cols
   std::uniform_real_distribution<float> u(-2.0f, 151.0f), v(-2.0f, 121.0f);
   for (int i = 0; i < 3000; ++i) {

@@ -52,8 +52,8 @@ TEST_F(LocalMapMatchingTest, UnmarkedPointsSearchWithTheirOwnRadius) {
   search.unmarked_radius_px = 16.0;
   for (const PointId id : {marked, unmarked}) {
     std::vector<bool> taken(1, false);
-    const std::vector<PointMatch> matches = MatchLocalMap(
-        &map_, {id}, frame_, camera_, Eigen::Isometry3d::Identity(), search, &taken);
+    const std::vector<PointMatch> matches =
+        MatchLocalMap(&map_, {id}, frame_, camera_, Eigen::Isometry3d::Identity(), search, &taken);
     ASSERT_EQ(matches.size(), id == unmarked ? 1u : 0u);
     EXPECT_EQ(taken[0], id == unmarked);
   }
@@ -69,10 +69,10 @@ TEST_F(LocalMapMatchingTest, UnmarkedPointsMatchOnlyNearTheirLastPosition) {
   for (const PointId id : {far_unmarked, far_marked, near_unmarked}) {
     std::vector<bool> taken(1, false);
     const size_t expected = id == far_unmarked ? 0u : 1u;
-    EXPECT_EQ(MatchLocalMap(&map_, {id}, frame_, camera_, Eigen::Isometry3d::Identity(), search,
-                            &taken)
-                  .size(),
-              expected);
+    EXPECT_EQ(
+        MatchLocalMap(&map_, {id}, frame_, camera_, Eigen::Isometry3d::Identity(), search, &taken)
+            .size(),
+        expected);
   }
 }
 

@@ -41,9 +41,9 @@ struct ProjectionSearchOptions {
 /// feature whose uv_ideal lies within the radius (r * octave_scale[predicted_octave] when the
 /// octave is predicted, else r; r is the point's radius_px when positive, else options.radius_px)
 /// and, with a predicted octave, whose octave is within octave_tolerance (and, with max_offset_m,
-/// whose depth measurement is near p_camera). The best candidate must pass max_distance and the ratio test. Each feature is
-/// matched at most once: when several points pick the same feature, the one with the smallest
-/// distance keeps it and the others get -1.
+/// whose depth measurement is near p_camera). The best candidate must pass max_distance and the
+/// ratio test. Each feature is matched at most once: when several points pick the same feature,
+/// the one with the smallest distance keeps it and the others get -1.
 std::vector<int> SearchByProjection(const std::vector<ProjectedPoint>& points,
                                     const FrameFeatures& frame,
                                     const ProjectionSearchOptions& options = {});

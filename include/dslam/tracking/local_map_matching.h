@@ -43,8 +43,8 @@ struct ProjectedLocalMap {
 };
 
 /// Projects the map points `candidates` into the frame with `T_camera_world`, each with its
-/// search radius from `search` (by the point's `marked`). Points outside the image are skipped;
-/// search.count_visible is not read here (see MatchLocalMap).
+/// search radius from `search` (by the point's `marked`). Points nearer than search.min_depth_m
+/// or outside the image are skipped; search.count_visible is not read here (see MatchLocalMap).
 ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& candidates,
                                   const FrameFeatures& features, const PinholeCamera& camera,
                                   const Eigen::Isometry3d& T_camera_world,
