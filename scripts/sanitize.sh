@@ -7,8 +7,9 @@
 #   thread   ThreadSanitizer, workspace build/tsan: test_slam_threads (the back-end thread against
 #            the synchronous mode, Reset and destruction with work queued, keyframe observers),
 #            test_static_map_slam (the static map fused on the back-end thread while another
-#            thread reads it), then `dslam_run_dataset --threads --backend on --map --map-unmasked`
-#            on $DSLAM_SANITIZE_FRAMES (80) frames of the synthetic `walking` scenario, seed 1.
+#            thread reads it), then `dslam_run_dataset --threads --backend on --map --map-unmasked
+#            --objects` (the objects' mask and optical flow side by side on OpenCV's pool) on
+#            $DSLAM_SANITIZE_FRAMES (80) frames of the synthetic `walking` scenario, seed 1.
 #   address  AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (undefined behaviour
 #            aborts like a memory error), workspace build/asan: every gtest binary of dslam (each
 #            `dslam_test(...)` in test/*/CMakeLists.txt: the ROS-free parts and the ros part;
@@ -132,7 +133,8 @@ case "$KIND" in
       --scenario walking --frames "$FRAMES" --seed 1 --output "$SEQUENCE"
     run_sanitized run_dataset "$BIN/dslam_run_dataset" --dataset "$SEQUENCE" \
       --trajectory "$REPORTS/trajectory.txt" --summary "$REPORTS/summary.json" --threads \
-      --backend on --map "$REPORTS/map.pcd" --map-unmasked "$REPORTS/map_unmasked.pcd" --quiet ;;
+      --backend on --map "$REPORTS/map.pcd" --map-unmasked "$REPORTS/map_unmasked.pcd" \
+      --objects "$REPORTS/objects.txt" --quiet ;;
   address)
     export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
     for test in "${GTESTS[@]}"; do run_gtest "$test"; done ;;

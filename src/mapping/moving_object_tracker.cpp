@@ -1,7 +1,12 @@
 #include "dslam/mapping/moving_object_tracker.h"
 
 #include <algorithm>
+#include <exception>
+#include <utility>
 
+#include <opencv2/core/utility.hpp>
+
+#include "dslam/mapping/region_join.h"
 #include "dslam/mapping/region_split.h"
 
 namespace dslam {
@@ -11,20 +16,59 @@ MovingObjectTracker::MovingObjectTracker(const Config& config)
       objects_config_(config.objects),
       depth_noise_(config.depth_noise),
       tracker_(config.objects),
-      reference_(config.dynamic_mask, config.depth_noise) {}
+      reference_(config.dynamic_mask, config.depth_noise),
+      carrier_(config.objects, config.dynamic_mask) {}
+
+CarriedFlow MovingObjectTracker::MaskAndFlow(const RgbdFrame& frame, const FrameResult& result,
+                                             const std::vector<Eigen::Vector3d>& predicted) {
+  // The carried points' flow needs no mask: it runs beside the mask's computation (OpenCV's
+  // thread pool; one after the other with one thread). Neither touches the other's state.
+  CarriedFlow flow;
+  std::exception_ptr errors[2];
+  cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& range) {
+    for (int task = range.start; task < range.end; ++task) {
+      try {
+        if (task == 0) {
+          mask_ = ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_,
+                                     predicted, objects_config_.gate_m,
+                                     objects_config_.track_min_points,
+                                     mask_config_.depth_change_seeds ? &reference_ : nullptr);
+        } else if (objects_config_.carry_points) {
+          flow = carrier_.Track(frame, result.points);
+        }
+      } catch (...) {
+        errors[task] = std::current_exception();
+      }
+    }
+  });
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+  return flow;
+}
 
 std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
                                                         const FrameResult& result) {
   if (result.reset) Reset();
-  if (!result.has_pose) return {};
+  if (!result.has_pose) {
+    carrier_.Reset();  // the next frame is not consecutive to the last one carried from
+    return {};
+  }
+  if (!history_.empty() && !(result.stamp_s > history_.back().stamp_s)) {
+    history_.clear();
+    carrier_.Reset();
+  }
   const std::vector<Eigen::Vector3d> predicted = tracker_.PredictedPositions(result.stamp_s);
-  mask_ = ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_, predicted,
-                             objects_config_.gate_m, objects_config_.track_min_points,
-                             mask_config_.depth_change_seeds ? &reference_ : nullptr);
+  CarriedFlow flow = MaskAndFlow(frame, result, predicted);
   if (mask_config_.depth_change_seeds) reference_.Add(frame, result.T_world_camera, result.stamp_s);
-  if (!history_.empty() && !(result.stamp_s > history_.back().stamp_s)) history_.clear();
+  if (objects_config_.carry_points) {
+    carrier_.Attach(std::move(flow), frame, result.T_world_camera, result.points, &mask_);
+  }
   SplitRegions(frame, result.T_world_camera, history_, result.stamp_s, predicted, mask_config_,
                objects_config_, &mask_);
+  if (objects_config_.join_stacked_regions) {
+    JoinStackedRegions(mask_config_, objects_config_, &mask_);
+  }
   std::vector<ObjectObservation> observations =
       ObservationsFromMask(mask_, objects_config_, result.stamp_s, history_, &depth_noise_,
                            result.T_world_camera.translation(), predicted);

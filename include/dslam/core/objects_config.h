@@ -107,6 +107,12 @@ struct ObjectsConfig {
   double coast_s = 0.2;
   double max_unseen_s = 1.0;
   double maneuver_chi2 = 12.59;
+  bool carry_points = true;
+  bool join_stacked_regions = true;
+  int carry_window_px = 11;
+  int carry_levels = 3;
+  double carry_max_error_px = 0.5;
+  int carry_max_points = 500;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -179,6 +185,11 @@ struct ObjectsConfig {
     v(Field("split_min_distance_m", "m", 0.0, 10.0,
             "smallest distance of the median positions of two split groups"),
       s.split_min_distance_m);
+    // Regions one above the other in the image (column ranges overlapping by more than
+    // split_max_overlap) whose world boxes come within dynamic_mask.margin_m are joined: the
+    // parts of one person whose seed points left a gap (dslam/mapping/region_join.h).
+    v(Flag("join_stacked_regions", "join regions that are parts of one thing, one above the other"),
+      s.join_stacked_regions);
     // A track is reported once min_hits consecutive observations had a point velocity of at
     // least min_speed_mps: static surfaces mislabelled for a while are not objects. A walker that
     // stops stays reported (it moved before).
@@ -197,6 +208,21 @@ struct ObjectsConfig {
       s.coast_s);
     v(Field("max_unseen_s", "s", 0.0, 60.0, "a track unseen for longer is dropped"),
       s.max_unseen_s);
+    // The points of the moving things that the front end's matching lost between two frames are
+    // carried by optical flow (dslam/mapping/point_carrier.h), for the objects only: pyramidal
+    // Lucas-Kanade on the half-resolution grey image with a carry_window_px square window (at
+    // that resolution) on carry_levels levels, kept when the backward flow returns within
+    // carry_max_error_px (full resolution) of the start; at most carry_max_points per frame
+    // (evenly spread over the lost points: bounds the time per frame).
+    v(Flag("carry_points", "carry lost points of moving things by optical flow"), s.carry_points);
+    v(Field("carry_window_px", "px", 5, 101, "optical flow window side (half resolution)"),
+      s.carry_window_px);
+    v(Field("carry_levels", "-", 1, 8, "optical flow pyramid levels"), s.carry_levels);
+    v(Field("carry_max_error_px", "px", 0.01, 100.0,
+            "largest forward-backward flow error of a carried point"),
+      s.carry_max_error_px);
+    v(Field("carry_max_points", "-", 1, 1000000, "most points carried per frame"),
+      s.carry_max_points);
   }
 };
 

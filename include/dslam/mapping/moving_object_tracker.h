@@ -1,8 +1,11 @@
 #pragma once
 // The moving objects of each frame, from its FrameResult: the dynamic mask (dynamic_mask.h) of
 // the frame's unmarked points (and, with dynamic_mask.depth_change_seeds, the depth change against
-// recent frames: depth_change.h), its regions split where two things move differently
-// (region_split.h), the regions as observations, and the tracker (object_tracker.h).
+// recent frames: depth_change.h); the points of the previous frame's regions that the front end
+// lost, carried into its regions by optical flow (point_carrier.h, objects.carry_points); its
+// regions split where two things move differently (region_split.h) and joined where they are
+// parts of one thing (region_join.h, objects.join_stacked_regions); the regions as observations,
+// and the tracker (object_tracker.h).
 // Runs on the thread that consumes FrameResults (the tracking thread of dslam_run_dataset, the
 // node's worker), after Slam::ProcessFrame.
 
@@ -14,6 +17,7 @@
 #include "dslam/mapping/depth_change.h"
 #include "dslam/mapping/dynamic_mask.h"
 #include "dslam/mapping/object_tracker.h"
+#include "dslam/mapping/point_carrier.h"
 #include "dslam/tracking/frame_result.h"
 
 namespace dslam {
@@ -25,7 +29,8 @@ class MovingObjectTracker {
   explicit MovingObjectTracker(const Config& config);
 
   /// The objects of `frame` from its `result` (result.points must be filled: FrameRequest
-  /// points). Lost frames (no pose) return nothing and leave the tracks as they are; a reset
+  /// points). Lost frames (no pose) return nothing and leave the tracks as they are (no point is
+  /// carried across them); a reset
   /// result (FrameResult::reset) forgets them first.
   std::vector<TrackedObject> Process(const RgbdFrame& frame, const FrameResult& result);
 
@@ -37,9 +42,14 @@ class MovingObjectTracker {
     tracker_.Reset();
     history_.clear();
     reference_.Clear();
+    carrier_.Reset();
   }
 
  private:
+  /// Computes mask_ for `frame` and, beside it, the carried points' flow (PointCarrier::Track).
+  CarriedFlow MaskAndFlow(const RgbdFrame& frame, const FrameResult& result,
+                          const std::vector<Eigen::Vector3d>& predicted);
+
   DynamicMaskConfig mask_config_;
   ObjectsConfig objects_config_;
   DepthNoiseConfig depth_noise_;  ///< for the observations' motion_sigma_mps
@@ -48,6 +58,7 @@ class MovingObjectTracker {
   std::deque<PointPositions> history_;  ///< recent frames' unmarked points, oldest first
   /// Recent frames' depth for the depth-change seeds (DynamicMaskConfig::depth_change_seeds).
   DepthReference reference_;
+  PointCarrier carrier_;  ///< lost points of the regions, by optical flow (carry_points)
 };
 
 }  // namespace dslam
