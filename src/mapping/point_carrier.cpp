@@ -62,6 +62,9 @@ CarriedFlow PointCarrier::Track(const RgbdFrame& frame, const std::vector<Observ
   CarriedFlow flow;
   if (previous_ids_.empty()) return flow;
   flow.pyramid = Pyramid(frame);
+  if (previous_pyramid_.empty() || previous_pyramid_[0].size() != flow.pyramid[0].size()) {
+    return flow;  // the image size changed: nothing to follow
+  }
   std::unordered_set<PointId> matched;
   for (const ObservedPoint& point : points) matched.insert(point.id);
   std::vector<size_t> lost;  // the previous points the front end did not find

@@ -1,6 +1,7 @@
 #include "dslam/mapping/region_join.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "cell_grid.h"

@@ -158,6 +158,20 @@ TEST_F(PointCarrierTest, ResetForgetsThePreviousFrame) {
   EXPECT_TRUE(mask.regions[0].points.empty());
 }
 
+TEST_F(PointCarrierTest, AFrameOfAnotherSizeCarriesNothing) {
+  RgbdFrame small;
+  small.stamp_s = second_.stamp_s;
+  small.camera = std::make_shared<PinholeCamera>(320, 240, 262.5, 262.5, 159.5, 119.5);
+  cv::resize(second_.colour, small.colour, cv::Size(320, 240));
+  cv::resize(second_.depth_m, small.depth_m, cv::Size(320, 240), 0, 0, cv::INTER_NEAREST);
+  DynamicMask mask;
+  mask.decimation = kDecimation;
+  mask.labels = cv::Mat(240 / kDecimation, 320 / kDecimation, CV_16UC1, cv::Scalar(1));
+  mask.regions.resize(1);
+  mask.regions[0].label = 1;
+  EXPECT_EQ(carrier_.Carry(small, CameraPose(), {}, &mask), 0);
+}
+
 TEST_F(PointCarrierTest, CarriedPointsAreCarriedAgainInTheNextFrame) {
   DynamicMask mask = MaskOver(kBox + cv::Point(kShiftPx, 0), second_, {});
   ASSERT_EQ(carrier_.Carry(second_, CameraPose(), {}, &mask), 16);

@@ -30,8 +30,7 @@ class MovingObjectTracker {
 
   /// The objects of `frame` from its `result` (result.points must be filled: FrameRequest
   /// points). Lost frames (no pose) return nothing and leave the tracks as they are (no point is
-  /// carried across them); a reset
-  /// result (FrameResult::reset) forgets them first.
+  /// carried across them); a reset result (FrameResult::reset) forgets them first.
   std::vector<TrackedObject> Process(const RgbdFrame& frame, const FrameResult& result);
 
   /// The dynamic mask of the last frame Process was given with a pose (empty before).

@@ -52,7 +52,7 @@ class PointCarrier {
   /// First half: builds the pyramid of `frame` and tracks the previous frame's region points
   /// that `points` (the frame's matched points) lacks, at most carry_max_points of them (evenly
   /// spread), keeping those whose backward flow returns within carry_max_error_px. Reads the
-  /// previous frame only; nothing when there is none.
+  /// previous frame only; nothing when there is none or its image size differs.
   CarriedFlow Track(const RgbdFrame& frame, const std::vector<ObservedPoint>& points);
 
   /// Second half: adds the points of `flow` (from Track of the same frame) to the regions of
