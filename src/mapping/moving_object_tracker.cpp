@@ -1,11 +1,9 @@
 #include "dslam/mapping/moving_object_tracker.h"
 
 #include <algorithm>
-#include <exception>
 #include <utility>
 
-#include <opencv2/core/utility.hpp>
-
+#include "dslam/core/side_by_side.h"
 #include "dslam/mapping/region_join.h"
 #include "dslam/mapping/region_split.h"
 
@@ -21,29 +19,19 @@ MovingObjectTracker::MovingObjectTracker(const Config& config)
 
 CarriedFlow MovingObjectTracker::MaskAndFlow(const RgbdFrame& frame, const FrameResult& result,
                                              const std::vector<Eigen::Vector3d>& predicted) {
-  // The carried points' flow needs no mask: it runs beside the mask's computation (OpenCV's
-  // thread pool; one after the other with one thread). Neither touches the other's state.
+  // The carried points' flow needs no mask: it runs beside the mask's computation. Neither
+  // touches the other's state.
   CarriedFlow flow;
-  std::exception_ptr errors[2];
-  cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& range) {
-    for (int task = range.start; task < range.end; ++task) {
-      try {
-        if (task == 0) {
-          mask_ = ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_,
-                                     predicted, objects_config_.gate_m,
-                                     objects_config_.track_min_points,
-                                     mask_config_.depth_change_seeds ? &reference_ : nullptr);
-        } else if (objects_config_.carry_points) {
-          flow = carrier_.Track(frame, result.points);
-        }
-      } catch (...) {
-        errors[task] = std::current_exception();
-      }
-    }
-  });
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
+  RunSideBySide(
+      [&] {
+        mask_ =
+            ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_, predicted,
+                               objects_config_.gate_m, objects_config_.track_min_points,
+                               mask_config_.depth_change_seeds ? &reference_ : nullptr);
+      },
+      [&] {
+        if (objects_config_.carry_points) flow = carrier_.Track(frame, result.points);
+      });
   return flow;
 }
 

@@ -6,7 +6,7 @@
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/relocalisation.h"
-#include "side_by_side.h"
+#include "dslam/core/side_by_side.h"
 
 namespace dslam {
 

@@ -5,7 +5,7 @@
 #include "dslam/tracking/id_set.h"
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/odometry.h"
-#include "side_by_side.h"
+#include "dslam/core/side_by_side.h"
 
 namespace dslam {
 

@@ -1,5 +1,7 @@
 #pragma once
-// Internal to the tracking part: fork-join of two independent steps of Odometry::ProcessFrame.
+// Fork-join of two independent steps on OpenCV's thread pool: steps of Odometry::ProcessFrame
+// (e.g. the motion-only pose beside the Delaunay graph) and MovingObjectTracker's dynamic mask
+// beside its optical flow.
 
 #include <exception>
 
