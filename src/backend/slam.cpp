@@ -2,9 +2,22 @@
 
 #include <utility>
 
+#include <opencv2/core.hpp>
+
 #include "dslam/core/stopwatch.h"
 
 namespace dslam {
+namespace {
+
+/// OpenCV creates the operations of its matrix expressions (cv::Mat::zeros, comparisons such as
+/// `labels == 3`) on their first use in the process (CV_SINGLETON_LAZY_INIT in OpenCV's
+/// matrix_expressions.cpp), inside the uninstrumented library, so ThreadSanitizer sees no order
+/// between that creation on one thread and a use on another (it reported the moving objects' and
+/// the static map's dynamic masks, on the tracking and the back-end thread). Creating them before
+/// the back-end thread starts orders the creation before every later use.
+void CreateMatrixExpressionOperations() { cv::Mat unused = cv::Mat::zeros(1, 1, CV_8UC1); }
+
+}  // namespace
 
 Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined,
            std::vector<std::shared_ptr<KeyFrameObserver>> observers)
@@ -12,7 +25,10 @@ Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined,
       refined_recording_(refined),
       observers_(std::move(observers)),
       odometry_(config) {
-  if (mode_ == BackEndMode::kThreaded) back_end_ = std::thread(&Slam::BackEndLoop, this);
+  if (mode_ == BackEndMode::kThreaded) {
+    CreateMatrixExpressionOperations();
+    back_end_ = std::thread(&Slam::BackEndLoop, this);
+  }
 }
 
 FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
