@@ -8,8 +8,10 @@
 //
 // Two regions are joined (JoinStackedRegions) when
 // - their cell column ranges in the image overlap by more than ObjectsConfig::split_max_overlap
-//   of the narrower range (one above the other: the converse of the side-by-side test that
-//   region_split.h requires before splitting, so a split is never joined again), and
+//   of the narrower range (one above the other: the side-by-side test that region_split.h
+//   requires before splitting, reversed; the split measures the overlap on its points' 10th-90th
+//   percentile ranges, the join on all cells, so two split parts whose cells overlap more than
+//   their points do can be joined again), and
 // - their world boxes come within DynamicMaskConfig::margin_m of each other along every axis
 //   (two people one behind the other overlap in the image but are a body's depth apart).
 
