@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
-#include <unordered_set>
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
+
+#include "dslam/tracking/id_set.h"
 
 namespace dslam {
 namespace {
@@ -65,11 +66,11 @@ CarriedFlow PointCarrier::Track(const RgbdFrame& frame, const std::vector<Observ
   if (previous_pyramid_.empty() || previous_pyramid_[0].size() != flow.pyramid[0].size()) {
     return flow;  // the image size changed: nothing to follow
   }
-  std::unordered_set<PointId> matched;
-  for (const ObservedPoint& point : points) matched.insert(point.id);
+  IdSet matched(points.size());
+  for (const ObservedPoint& point : points) matched.Insert(point.id);
   std::vector<size_t> lost;  // the previous points the front end did not find
   for (size_t i = 0; i < previous_ids_.size(); ++i) {
-    if (matched.count(previous_ids_[i]) == 0) lost.push_back(i);
+    if (!matched.Contains(previous_ids_[i])) lost.push_back(i);
   }
   const size_t take = std::min(lost.size(), static_cast<size_t>(max_points_));
   if (take == 0) return flow;

@@ -3,10 +3,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "dslam/core/side_by_side.h"
 #include "dslam/core/stopwatch.h"
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/relocalisation.h"
-#include "dslam/core/side_by_side.h"
 
 namespace dslam {
 

@@ -2,10 +2,10 @@
 #include <algorithm>
 #include <string>
 
+#include "dslam/core/side_by_side.h"
 #include "dslam/tracking/id_set.h"
 #include "dslam/tracking/map_point_creation.h"
 #include "dslam/tracking/odometry.h"
-#include "dslam/core/side_by_side.h"
 
 namespace dslam {
 
