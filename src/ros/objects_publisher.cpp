@@ -8,8 +8,8 @@
 namespace dslam {
 namespace ros_layer {
 
-ObjectsPublisher::ObjectsPublisher(ros::NodeHandle& nh, const Config& config)
-    : enabled_(config.objects.enabled), objects_(config) {
+ObjectsPublisher::ObjectsPublisher(ros::NodeHandle& nh, const Config& config, WorkerMode mode)
+    : enabled_(config.objects.enabled), objects_(config), worker_(mode, 2) {
   if (!enabled_) return;
   objects_pub_ = nh.advertise<dslam::MovingObjects>("moving_objects", 5);
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("moving_object_markers", 5);
@@ -23,11 +23,23 @@ void ObjectsPublisher::Publish(const RgbdFrame& frame, const FrameResult& result
                                const std_msgs::Header& odom_header,
                                const Eigen::Isometry3d& T_base_camera) {
   if (!Wanted()) {  // nobody listens: the next subscriber starts with fresh tracks
-    if (tracking_) objects_.Reset();
+    if (tracking_) worker_.Post([this] { objects_.Reset(); });
     tracking_ = false;
     return;
   }
   tracking_ = true;
+  worker_.Post([this, frame, result, odom_header, T_base_camera] {
+    try {
+      TrackAndPublish(frame, result, odom_header, T_base_camera);
+    } catch (const std::exception& e) {  // the next frames are still tracked
+      ROS_ERROR_THROTTLE(1.0, "dslam: moving objects of a frame skipped: %s", e.what());
+    }
+  });
+}
+
+void ObjectsPublisher::TrackAndPublish(const RgbdFrame& frame, const FrameResult& result,
+                                       const std_msgs::Header& odom_header,
+                                       const Eigen::Isometry3d& T_base_camera) {
   const dslam::MovingObjects message =
       MakeMovingObjects(objects_.Process(frame, result), T_base_camera, odom_header);
   if (objects_pub_.getNumSubscribers() > 0) objects_pub_.publish(message);

@@ -67,7 +67,9 @@ void OdometryNodelet::onInit() {
   }
   stamps_ = std::make_unique<StampCheck>(config.tracking.max_prediction_gap_s);
   publisher_ = std::make_unique<FramePublisher>(nh, config_);
-  objects_publisher_ = std::make_unique<ObjectsPublisher>(nh, slam_->config());
+  objects_publisher_ = std::make_unique<ObjectsPublisher>(
+      nh, slam_->config(),
+      config_.backend_threads ? WorkerMode::kThreaded : WorkerMode::kSynchronous);
   if (mapper_) map_publisher_ = std::make_unique<StaticMapPublisher>(nh, config_, mapper_);
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);

@@ -8,14 +8,21 @@
 namespace dslam {
 namespace tools {
 
-ObjectsOutput::ObjectsOutput(const std::string& path, const Config& config)
-    : path_(path), out_(path), objects_(config) {
+ObjectsOutput::ObjectsOutput(const std::string& path, const Config& config, WorkerMode mode)
+    : path_(path), out_(path), objects_(config), worker_(mode, 2) {
   if (!out_) throw std::runtime_error("cannot write " + path);
   out_ << "# dslam moving objects, odometry world frame (the first frame's optical frame)\n"
           "# timestamp id x y z vx vy vz ex ey ez\n";
 }
 
 void ObjectsOutput::Add(const RgbdFrame& frame, const FrameResult& result) {
+  const Stopwatch watch;
+  // The frame's images are shared, not copied: nothing writes to a frame after ProcessFrame.
+  worker_.Post([this, frame, result] { Track(frame, result); });
+  add_times_ms_.push_back(watch.ElapsedMs());
+}
+
+void ObjectsOutput::Track(const RgbdFrame& frame, const FrameResult& result) {
   const Stopwatch watch;
   const std::vector<TrackedObject> objects = objects_.Process(frame, result);
   times_ms_.push_back(watch.ElapsedMs());
@@ -31,6 +38,7 @@ void ObjectsOutput::Add(const RgbdFrame& frame, const FrameResult& result) {
 }
 
 void ObjectsOutput::Close() {
+  worker_.Wait();
   out_.flush();
   if (!out_) throw std::runtime_error("error while writing " + path_);
 }

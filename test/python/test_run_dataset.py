@@ -1,6 +1,7 @@
 """Tests of dslam_run_dataset's command line: the back end's execution mode (--threads), the
 fixed feeding rate (--rate) and what the summary JSON and status CSV report about them, on a
-short synthetic sequence rendered by dslam_synth."""
+short synthetic sequence rendered by dslam_synth; the moving objects (--objects) on their own
+thread with --threads, on a short walking sequence."""
 
 import csv
 import json
@@ -32,9 +33,11 @@ class RunDatasetCliTest(unittest.TestCase):
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp(prefix="dslam_run_dataset_")
         cls.sequence = os.path.join(cls.tmp, "static_room")
-        subprocess.run([find_tool("dslam_synth"), "--scenario", "static_room", "--frames",
-                        str(FRAMES), "--seed", "1", "--output", cls.sequence], check=True,
-                       stdout=subprocess.DEVNULL)
+        cls.walking = os.path.join(cls.tmp, "walking")
+        for scenario, folder in (("static_room", cls.sequence), ("walking", cls.walking)):
+            subprocess.run([find_tool("dslam_synth"), "--scenario", scenario, "--frames",
+                            str(FRAMES), "--seed", "1", "--output", folder], check=True,
+                           stdout=subprocess.DEVNULL)
 
     @classmethod
     def tearDownClass(cls):
@@ -95,6 +98,32 @@ class RunDatasetCliTest(unittest.TestCase):
         ran = sum(int(row["ba_points"]) > 0 or int(row["spd_points"]) > 0 for row in delivered)
         self.assertGreaterEqual(summary["backend_runs"], ran)
         self.assertLessEqual(summary["backend_runs"], ran + 1)
+
+    def objects_run(self, name, *options):
+        """Runs dslam_run_dataset --objects on the walking sequence (back end off: the front end
+        is then the same with and without --threads); returns (objects file, summary)."""
+        out = os.path.join(self.tmp, name)
+        subprocess.run(
+            [find_tool("dslam_run_dataset"), "--dataset", self.walking, "--trajectory",
+             out + ".txt", "--summary", out + ".json", "--objects", out + "_objects.txt",
+             "--backend", "off", "--quiet"] + list(options),
+            check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        with open(out + "_objects.txt") as handle:
+            objects = handle.read()
+        with open(out + ".json") as handle:
+            return objects, json.load(handle)
+
+    def test_objects_on_their_own_thread_write_the_same_file(self):
+        synchronous, sync_summary = self.objects_run("objects_sync")
+        threaded, thread_summary = self.objects_run("objects_threads", "--threads", "--rate", "30")
+        lines = [line for line in synchronous.splitlines() if not line.startswith("#")]
+        self.assertGreater(len(lines), 0)  # the walker is tracked within 30 frames
+        self.assertEqual(threaded, synchronous)
+        self.assertEqual(thread_summary["object_frames"], len(lines))
+        # Synchronous, handing a frame over is its whole work (the median of a larger series).
+        self.assertGreaterEqual(sync_summary["median_objects_add_ms"],
+                                sync_summary["median_objects_ms"])
+        self.assertIn("median_objects_add_ms", thread_summary)
 
     def test_bad_rate_is_a_usage_error(self):
         for value in ["0", "-5", "fast"]:

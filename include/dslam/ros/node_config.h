@@ -68,8 +68,8 @@ struct NodeConfig {
     v(Field("tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at the first frame"),
       s.tf_wait_s);
     v(Flag("backend_threads",
-           "back end (backend.enabled) on its own thread beside tracking; false: after each "
-           "keyframe on the worker thread"),
+           "back end (backend.enabled) and moving objects each on a thread of their own beside "
+           "tracking; false: both on the worker thread"),
       s.backend_threads);
     v(Field("static_map_rate_hz", "Hz", 0.01, 100.0,
             "highest rate at which static_map is rebuilt and published (map.enabled; only while "

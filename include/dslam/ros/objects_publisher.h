@@ -1,9 +1,12 @@
 #pragma once
 // Publishes the moving objects of each frame: dslam/MovingObjects `moving_objects` and the
 // MarkerArray `moving_object_markers` (object_conversions.h), in the odom frame. The dynamic
-// mask and the tracker (part mapping, MovingObjectTracker) run on the worker thread after
-// Slam::ProcessFrame, only while objects.enabled and someone subscribes to either topic (a new
-// subscriber starts with fresh tracks).
+// mask and the tracker (part mapping, MovingObjectTracker) run after Slam::ProcessFrame, only
+// while objects.enabled and someone subscribes to either topic (a new subscriber starts with
+// fresh tracks): threaded (~backend_threads), on an OrderedWorker thread of their own that takes
+// the frames in order (the odometry's worker only hands each frame over; it waits while two
+// frames are queued); otherwise on the odometry's worker thread. The tracker and the publishers'
+// messages are the objects thread's alone (OrderedWorker's locking policy).
 
 #include <memory>
 
@@ -12,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "dslam/core/config.h"
+#include "dslam/core/ordered_worker.h"
 #include "dslam/core/rgbd_frame.h"
 #include "dslam/mapping/moving_object_tracker.h"
 #include "dslam/tracking/frame_result.h"
@@ -19,26 +23,34 @@
 namespace dslam {
 namespace ros_layer {
 
-/// Owns the moving-object publishers and the tracker. Call from one thread (the worker).
+/// Owns the moving-object publishers, the tracker and its thread. Call from one thread (the
+/// odometry's worker).
 class ObjectsPublisher {
  public:
-  /// Advertises the topics on `nh` (relative names) when config.objects.enabled.
-  ObjectsPublisher(ros::NodeHandle& nh, const Config& config);
+  /// Advertises the topics on `nh` (relative names) when config.objects.enabled; `mode` says
+  /// where the tracker runs (kThreaded: its own thread).
+  ObjectsPublisher(ros::NodeHandle& nh, const Config& config, WorkerMode mode);
 
   /// True when the next frame's objects will be computed: the odometry must then fill
   /// FrameResult::points (FrameRequest).
   bool Wanted() const;
 
   /// Tracks the objects of `frame` (its `result`) and publishes them with `odom_header` (image
-  /// stamp, odom frame id); T_base_camera is the camera mount [m].
+  /// stamp, odom frame id); T_base_camera is the camera mount [m]. Threaded, queues the frame
+  /// (its images shared, not copied) and returns.
   void Publish(const RgbdFrame& frame, const FrameResult& result,
                const std_msgs::Header& odom_header, const Eigen::Isometry3d& T_base_camera);
 
  private:
+  /// The objects thread's part of Publish.
+  void TrackAndPublish(const RgbdFrame& frame, const FrameResult& result,
+                       const std_msgs::Header& odom_header, const Eigen::Isometry3d& T_base_camera);
+
   bool enabled_;
-  bool tracking_ = false;  ///< the tracker saw the previous frame
+  bool tracking_ = false;  ///< the tracker was handed the previous frame (the caller's)
   MovingObjectTracker objects_;
   ros::Publisher objects_pub_, markers_pub_;
+  OrderedWorker worker_;  ///< last: its destructor runs the queued frames before the above go
 };
 
 }  // namespace ros_layer

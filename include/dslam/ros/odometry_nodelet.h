@@ -7,6 +7,8 @@
 // FramePublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
 // With map.enabled, a StaticMapper receives Slam's keyframes (on the back-end thread, or on the
 // worker with ~backend_threads false) and StaticMapPublisher serves `static_map` and `save_map`.
+// ObjectsPublisher tracks the moving objects on a thread of its own (the worker with
+// ~backend_threads false).
 //
 // Threads and locks: the subscriber callbacks only queue input sets (LatestSlot) and count
 // arrivals (watchdog_mutex_); the worker thread alone uses slam_, publisher_, stamps_ and the

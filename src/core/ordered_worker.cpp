@@ -1,0 +1,83 @@
+#include "dslam/core/ordered_worker.h"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace dslam {
+
+OrderedWorker::OrderedWorker(WorkerMode mode, int max_pending)
+    : mode_(mode), max_pending_(max_pending) {
+  if (max_pending < 1) {
+    throw std::invalid_argument("OrderedWorker: max_pending must be >= 1, is " +
+                                std::to_string(max_pending));
+  }
+  if (mode_ == WorkerMode::kThreaded) thread_ = std::thread([this] { Run(); });
+}
+
+OrderedWorker::~OrderedWorker() {
+  if (!thread_.joinable()) return;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void OrderedWorker::Post(std::function<void()> task) {
+  if (mode_ == WorkerMode::kSynchronous) {
+    task();
+    return;
+  }
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [this] { return static_cast<int>(queue_.size()) < max_pending_; });
+  queue_.push_back(std::move(task));
+  changed_.notify_all();
+  RethrowLocked(lock);
+}
+
+void OrderedWorker::Wait() {
+  if (mode_ == WorkerMode::kSynchronous) return;
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [this] { return queue_.empty() && !busy_; });
+  RethrowLocked(lock);
+}
+
+int OrderedWorker::Pending() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return static_cast<int>(queue_.size()) + (busy_ ? 1 : 0);
+}
+
+void OrderedWorker::RethrowLocked(std::unique_lock<std::mutex>& lock) {
+  if (!error_) return;
+  std::exception_ptr error = std::move(error_);
+  error_ = nullptr;
+  lock.unlock();
+  std::rethrow_exception(error);
+}
+
+void OrderedWorker::Run() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (true) {
+    changed_.wait(lock, [this] { return stop_ || !queue_.empty(); });
+    if (queue_.empty()) return;  // stopped, nothing left to run
+    std::function<void()> task = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    changed_.notify_all();  // a slot is free for Post
+    lock.unlock();
+    std::exception_ptr error;
+    try {
+      task();
+    } catch (...) {
+      error = std::current_exception();
+    }
+    lock.lock();
+    if (error && !error_) error_ = error;
+    busy_ = false;
+    changed_.notify_all();
+  }
+}
+
+}  // namespace dslam
