@@ -1,8 +1,11 @@
 #include "dslam/mapping/region_split.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -11,6 +14,9 @@
 
 namespace dslam {
 namespace {
+
+/// Most two-means iterations over a region's cells.
+constexpr int kShareIterations = 10;
 
 Eigen::Vector3d AxisMedians(const std::vector<Eigen::Vector3d>& values) {
   Eigen::Vector3d median;
@@ -59,36 +65,155 @@ std::vector<int> TwoMeans(const std::vector<Eigen::Vector3d>& values) {
   return group;
 }
 
-/// Shares the cells labelled `from` out between `from` (group 0) and `to` (group 1): breadth
-/// first over the region's 4-connected cells from the seed cells of both groups at once.
-void ShareCells(const std::vector<int>& seeds0, const std::vector<int>& seeds1, uint16_t from,
-                uint16_t to, cv::Mat* labels) {
-  const int cols = labels->cols, rows = labels->rows;
-  auto* label = labels->ptr<uint16_t>();
-  std::vector<int8_t> part(static_cast<size_t>(rows) * cols, -1);
-  std::vector<int> queue;
-  for (int g = 0; g < 2; ++g) {
-    for (int cell : g == 0 ? seeds0 : seeds1) {
-      if (label[cell] != from || part[cell] != -1) continue;
-      part[cell] = static_cast<int8_t>(g);
-      queue.push_back(cell);
+/// [m] the 10th and 90th percentiles of `values`.
+std::pair<double, double> Range(std::vector<double> values) {
+  const size_t n = values.size();
+  std::nth_element(values.begin(), values.begin() + n / 10, values.end());
+  const double low = values[n / 10];
+  std::nth_element(values.begin(), values.begin() + (n - 1 - n / 10), values.end());
+  return {low, values[n - 1 - n / 10]};
+}
+
+/// Two world positions [m] around which a region is split.
+using Centres = std::array<Eigen::Vector3d, 2>;
+
+/// The per-axis median positions of two groups of `region`'s points whose velocities differ
+/// (steps 1-3 of region_split.h); none when its points move as one thing.
+std::optional<Centres> VelocityCentres(const DynamicRegion& region,
+                                       const std::deque<PointPositions>& history, double stamp_s,
+                                       const ObjectsConfig& config) {
+  std::vector<Eigen::Vector3d> velocities, positions;
+  for (size_t i = 0; i < region.points.size(); ++i) {
+    Eigen::Vector3d v;
+    if (!PointVelocity(region.points[i], region.points_world[i], history, stamp_s,
+                       config.motion_baseline_s, config, &v)) {
+      continue;
+    }
+    velocities.push_back(v);
+    positions.push_back(region.points_world[i]);
+  }
+  if (static_cast<int>(velocities.size()) < 2 * config.split_min_points) return std::nullopt;
+  const std::vector<int> group = TwoMeans(velocities);
+  if (group.empty()) return std::nullopt;
+  std::vector<Eigen::Vector3d> members[2], where[2];
+  for (size_t k = 0; k < group.size(); ++k) {
+    members[group[k]].push_back(velocities[k]);
+    where[group[k]].push_back(positions[k]);
+  }
+  for (const auto& m : members) {
+    if (static_cast<int>(m.size()) < config.split_min_points) return std::nullopt;
+  }
+  if ((AxisMedians(members[0]) - AxisMedians(members[1])).norm() < config.split_speed_mps) {
+    return std::nullopt;
+  }
+  return Centres{AxisMedians(where[0]), AxisMedians(where[1])};
+}
+
+/// The two farthest-apart `predicted` track positions [m, world] inside `region`'s box, when
+/// they are at least split_min_distance_m apart (step 0 of region_split.h).
+std::optional<Centres> TrackCentres(const DynamicRegion& region,
+                                    const std::vector<Eigen::Vector3d>& predicted,
+                                    const ObjectsConfig& config) {
+  std::vector<Eigen::Vector3d> inside;
+  for (const Eigen::Vector3d& p : predicted) {
+    if ((p.array() >= region.min_world.array()).all() &&
+        (p.array() <= region.max_world.array()).all()) {
+      inside.push_back(p);
     }
   }
-  for (size_t head = 0; head < queue.size(); ++head) {
-    const int cell = queue[head];
-    const int r = cell / cols, c = cell % cols;
-    const int neighbours[4][2] = {{r - 1, c}, {r + 1, c}, {r, c - 1}, {r, c + 1}};
-    for (const auto& rc : neighbours) {
-      if (rc[0] < 0 || rc[1] < 0 || rc[0] >= rows || rc[1] >= cols) continue;
-      const int next = rc[0] * cols + rc[1];
-      if (label[next] != from || part[next] != -1) continue;
-      part[next] = part[cell];
-      queue.push_back(next);
+  double farthest = config.split_min_distance_m;
+  std::optional<Centres> centres;
+  for (size_t i = 0; i < inside.size(); ++i) {
+    for (size_t j = i + 1; j < inside.size(); ++j) {
+      const double d = (inside[i] - inside[j]).norm();
+      if (d < farthest) continue;
+      farthest = d;
+      centres = Centres{inside[i], inside[j]};
     }
   }
-  for (int cell : queue) {
-    if (part[cell] == 1) label[cell] = to;
+  return centres;
+}
+
+/// [m] a point's position across the view: optical x and z (depth), not the image's vertical.
+Eigen::Vector2f Across(const Eigen::Vector3d& p_camera) {
+  return Eigen::Vector2f(static_cast<float>(p_camera.x()), static_cast<float>(p_camera.z()));
+}
+
+/// A region's cells shared out between two parts side by side (step 4 of region_split.h).
+struct CellParts {
+  std::vector<int> cells;                  ///< the region's cells (row * cols + col)
+  std::vector<Eigen::Vector2f> across;     ///< [m] their points' Across()
+  std::vector<uint8_t> part;               ///< 0 or 1 per cell
+  std::array<Eigen::Vector2f, 2> centres;  ///< [m] the parts' mean Across()
+};
+
+/// Two-means of the Across() positions of `region`'s cells (labels), started from
+/// `centres_world`: the parts can only lie side by side in the view, never one above the other.
+CellParts ShareCells(const CellGrid& grid, const Eigen::Isometry3d& T_camera_world,
+                     const DynamicRegion& region, const cv::Mat& labels,
+                     const Centres& centres_world) {
+  CellParts parts;
+  for (int g = 0; g < 2; ++g) parts.centres[g] = Across(T_camera_world * centres_world[g]);
+  const auto* label = labels.ptr<uint16_t>();
+  for (int cell = 0; cell < grid.size(); ++cell) {
+    if (label[cell] != region.label) continue;
+    parts.cells.push_back(cell);
+    parts.across.push_back(Across(grid.CellPointOnce(cell)));
   }
+  parts.part.assign(parts.cells.size(), 0);
+  for (int iteration = 0; iteration < kShareIterations; ++iteration) {
+    Eigen::Vector2f sums[2] = {Eigen::Vector2f::Zero(), Eigen::Vector2f::Zero()};
+    int counts[2] = {0, 0};
+    bool changed = false;
+    for (size_t k = 0; k < parts.cells.size(); ++k) {
+      const Eigen::Vector2f& p = parts.across[k];
+      const uint8_t g = (p - parts.centres[1]).squaredNorm() < (p - parts.centres[0]).squaredNorm();
+      changed |= g != parts.part[k];
+      parts.part[k] = g;
+      sums[g] += p;
+      ++counts[g];
+    }
+    if (counts[0] == 0 || counts[1] == 0) break;
+    for (int g = 0; g < 2; ++g) parts.centres[g] = sums[g] / static_cast<float>(counts[g]);
+    if (!changed && iteration > 0) break;
+  }
+  return parts;
+}
+
+/// The part of each of `region`'s points: its cell's, or the nearer centre's without a cell.
+std::vector<uint8_t> PointParts(const DynamicRegion& region, const CellParts& parts,
+                                const Eigen::Isometry3d& T_camera_world) {
+  std::vector<uint8_t> point_part(region.points.size());
+  for (size_t i = 0; i < region.points.size(); ++i) {
+    const int cell = region.point_cells[i];
+    const auto at = std::lower_bound(parts.cells.begin(), parts.cells.end(), cell);
+    if (cell >= 0 && at != parts.cells.end() && *at == cell) {
+      point_part[i] = parts.part[at - parts.cells.begin()];
+      continue;
+    }
+    const Eigen::Vector2f p = Across(T_camera_world * region.points_world[i]);
+    point_part[i] = (p - parts.centres[1]).squaredNorm() < (p - parts.centres[0]).squaredNorm();
+  }
+  return point_part;
+}
+
+/// Whether `parts` are two things side by side (step 5 of region_split.h): each holds
+/// split_min_points of the region's points, the horizontal ranges (10th-90th percentile of the
+/// cells' optical x) overlap by at most split_max_overlap of the narrower, and the parts' mean
+/// positions are at least split_min_distance_m apart.
+bool SideBySide(const CellParts& parts, const std::vector<uint8_t>& point_part,
+                const ObjectsConfig& config) {
+  const auto in_one = std::count(point_part.begin(), point_part.end(), 1);
+  const auto in_zero = static_cast<std::ptrdiff_t>(point_part.size()) - in_one;
+  if (std::min(in_zero, in_one) < config.split_min_points) return false;
+  if ((parts.centres[0] - parts.centres[1]).norm() < config.split_min_distance_m) return false;
+  std::vector<double> x[2];
+  for (size_t k = 0; k < parts.cells.size(); ++k) x[parts.part[k]].push_back(parts.across[k].x());
+  if (x[0].empty() || x[1].empty()) return false;
+  const auto a = Range(std::move(x[0])), b = Range(std::move(x[1]));
+  const double overlap = std::min(a.second, b.second) - std::max(a.first, b.first);
+  const double narrower = std::min(a.second - a.first, b.second - b.first);
+  return overlap <= config.split_max_overlap * narrower;
 }
 
 /// Recomputes the cell statistics (cells, centroid, box, colour) of `region` from `labels`.
@@ -103,128 +228,23 @@ void RecomputeStatistics(const CellGrid& grid, const cv::Mat& labels,
   statistics.WriteTo(region);
 }
 
-/// [m] the 10th and 90th percentiles of `values`.
-std::pair<double, double> Range(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return {values[n / 10], values[n - 1 - n / 10]};
-}
-
-/// Whether the two groups (0, 1; -1: neither) of `region`'s points are two things side by
-/// side: the overlap of their horizontal ranges (optical x) is at most split_max_overlap of the
-/// narrower range (parts of one thing moving differently, a leg under the body, overlap more),
-/// and their per-axis median positions are at least split_min_distance_m apart.
-bool SideBySide(const DynamicRegion& region, const std::vector<int>& groups,
-                const Eigen::Isometry3d& T_camera_world, const ObjectsConfig& config) {
-  std::vector<double> x[2];
-  std::vector<Eigen::Vector3d> positions[2];
-  for (size_t i = 0; i < groups.size(); ++i) {
-    if (groups[i] < 0) continue;
-    x[groups[i]].push_back((T_camera_world * region.points_world[i]).x());
-    positions[groups[i]].push_back(region.points_world[i]);
-  }
-  if (x[0].empty() || x[1].empty()) return false;
-  const auto a = Range(x[0]), b = Range(x[1]);
-  const double overlap = std::min(a.second, b.second) - std::max(a.first, b.first);
-  const double narrower = std::min(a.second - a.first, b.second - b.first);
-  return overlap <= config.split_max_overlap * narrower &&
-         (AxisMedians(positions[0]) - AxisMedians(positions[1])).norm() >=
-             config.split_min_distance_m;
-}
-
-/// The velocity groups of `region`'s points (-1: no velocity), or empty when it is one thing.
-std::vector<int> VelocityGroups(const DynamicRegion& region,
-                                const std::deque<PointPositions>& history, double stamp_s,
-                                const Eigen::Isometry3d& T_camera_world,
-                                const ObjectsConfig& config) {
-  std::vector<Eigen::Vector3d> velocities;
-  std::vector<int> index;
-  for (size_t i = 0; i < region.points.size(); ++i) {
-    Eigen::Vector3d v;
-    if (!PointVelocity(region.points[i], region.points_world[i], history, stamp_s,
-                       config.motion_baseline_s, config, &v)) {
-      continue;
-    }
-    velocities.push_back(v);
-    index.push_back(static_cast<int>(i));
-  }
-  if (static_cast<int>(velocities.size()) < 2 * config.split_min_points) return {};
-  const std::vector<int> group = TwoMeans(velocities);
-  if (group.empty()) return {};
-  std::vector<Eigen::Vector3d> members[2];
-  for (size_t k = 0; k < group.size(); ++k) members[group[k]].push_back(velocities[k]);
-  for (const auto& m : members) {
-    if (static_cast<int>(m.size()) < config.split_min_points) return {};
-  }
-  if ((AxisMedians(members[0]) - AxisMedians(members[1])).norm() < config.split_speed_mps) {
-    return {};
-  }
-  std::vector<int> groups(region.points.size(), -1);
-  for (size_t k = 0; k < group.size(); ++k) groups[index[k]] = group[k];
-  if (!SideBySide(region, groups, T_camera_world, config)) return {};
-  return groups;
-}
-
-/// The groups of `region`'s points by the nearer of the two farthest-apart `predicted` track
-/// positions [m, world] inside the region's box, when those are at least split_min_distance_m
-/// apart and both groups have split_min_points points; empty otherwise.
-std::vector<int> TrackGroups(const DynamicRegion& region,
-                             const std::vector<Eigen::Vector3d>& predicted,
-                             const Eigen::Isometry3d& T_camera_world, const ObjectsConfig& config) {
-  std::vector<Eigen::Vector3d> inside;
-  for (const Eigen::Vector3d& p : predicted) {
-    if ((p.array() >= region.min_world.array()).all() &&
-        (p.array() <= region.max_world.array()).all()) {
-      inside.push_back(p);
-    }
-  }
-  double farthest = config.split_min_distance_m;
-  int a = -1, b = -1;
-  for (size_t i = 0; i < inside.size(); ++i) {
-    for (size_t j = i + 1; j < inside.size(); ++j) {
-      const double d = (inside[i] - inside[j]).norm();
-      if (d < farthest) continue;
-      farthest = d;
-      a = static_cast<int>(i);
-      b = static_cast<int>(j);
-    }
-  }
-  if (a < 0) return {};
-  std::vector<int> groups(region.points.size());
-  int counts[2] = {0, 0};
-  for (size_t i = 0; i < region.points.size(); ++i) {
-    const Eigen::Vector3d& p = region.points_world[i];
-    groups[i] = (p - inside[b]).squaredNorm() < (p - inside[a]).squaredNorm();
-    ++counts[groups[i]];
-  }
-  if (std::min(counts[0], counts[1]) < config.split_min_points) return {};
-  if (!SideBySide(region, groups, T_camera_world, config)) return {};
-  return groups;
-}
-
-/// Splits `mask->regions[index]` by `groups` (VelocityGroups) into itself and a new region.
+/// Splits `mask->regions[index]` into itself (part 0) and a new region (part 1).
 void SplitRegion(const CellGrid& grid, const Eigen::Isometry3d& T_world_camera, size_t index,
-                 const std::vector<int>& groups, DynamicMask* mask) {
+                 const CellParts& parts, const std::vector<uint8_t>& point_part,
+                 DynamicMask* mask) {
   DynamicRegion& region = mask->regions[index];
-  DynamicRegion part;
-  part.label = static_cast<uint16_t>(mask->regions.size() + 1);
-  std::vector<int> seeds[2];
-  for (size_t i = 0; i < groups.size(); ++i) {
-    if (groups[i] >= 0 && region.point_cells[i] >= 0)
-      seeds[groups[i]].push_back(region.point_cells[i]);
-  }
-  ShareCells(seeds[0], seeds[1], region.label, part.label, &mask->labels);
-  DynamicRegion kept;
+  DynamicRegion kept, part;
   kept.label = region.label;
-  const auto* label = mask->labels.ptr<uint16_t>();
-  for (size_t i = 0; i < groups.size(); ++i) {
-    const int cell = region.point_cells[i];
-    const bool to_part =
-        groups[i] == 1 || (groups[i] == -1 && cell >= 0 && label[cell] == part.label);
-    DynamicRegion& target = to_part ? part : kept;
+  part.label = static_cast<uint16_t>(mask->regions.size() + 1);
+  auto* label = mask->labels.ptr<uint16_t>();
+  for (size_t k = 0; k < parts.cells.size(); ++k) {
+    if (parts.part[k] == 1) label[parts.cells[k]] = part.label;
+  }
+  for (size_t i = 0; i < region.points.size(); ++i) {
+    DynamicRegion& target = point_part[i] == 1 ? part : kept;
     target.points.push_back(region.points[i]);
     target.points_world.push_back(region.points_world[i]);
-    target.point_cells.push_back(cell);
+    target.point_cells.push_back(region.point_cells[i]);
   }
   RecomputeStatistics(grid, mask->labels, T_world_camera, &kept);
   RecomputeStatistics(grid, mask->labels, T_world_camera, &part);
@@ -246,23 +266,21 @@ int SplitRegions(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera
   for (size_t i = 0; i < origin.size(); ++i) origin[i] = i;
   int splits = 0;
   const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
-  for (size_t i = 0; i < mask->regions.size();) {
-    std::vector<int> groups;
-    if (parts[origin[i]] < kMaxSplitParts) {
-      groups = TrackGroups(mask->regions[i], predicted, T_camera_world, objects_config);
-      if (groups.empty()) {
-        groups = VelocityGroups(mask->regions[i], history, stamp_s, T_camera_world, objects_config);
-      }
+  for (size_t i = 0; i < mask->regions.size(); ++i) {
+    while (parts[origin[i]] < kMaxSplitParts) {
+      const DynamicRegion& region = mask->regions[i];
+      std::optional<Centres> centres = TrackCentres(region, predicted, objects_config);
+      if (!centres) centres = VelocityCentres(region, history, stamp_s, objects_config);
+      if (!centres || region.cells < 2) break;
+      if (!grid) grid = std::make_unique<CellGrid>(frame, mask_config);
+      const CellParts cells = ShareCells(*grid, T_camera_world, region, mask->labels, *centres);
+      const std::vector<uint8_t> point_part = PointParts(region, cells, T_camera_world);
+      if (!SideBySide(cells, point_part, objects_config)) break;
+      SplitRegion(*grid, T_world_camera, i, cells, point_part, mask);
+      origin.push_back(origin[i]);
+      ++parts[origin[i]];
+      ++splits;  // region i (its kept part) is tried again
     }
-    if (groups.empty()) {
-      ++i;
-      continue;
-    }
-    if (!grid) grid = std::make_unique<CellGrid>(frame, mask_config);
-    SplitRegion(*grid, T_world_camera, i, groups, mask);
-    origin.push_back(origin[i]);
-    ++parts[origin[i]];
-    ++splits;  // region i (its kept part) is tried again
   }
   return splits;
 }

@@ -1,4 +1,4 @@
-// SplitRegionsByVelocity on hand-made depth images: two box-shaped movers that touch in the
+// SplitRegions on hand-made depth images: two box-shaped movers that touch in the
 // image at the same depth (one region of ComputeDynamicMask), their points given velocities
 // through a history of earlier positions, with seeded noise.
 #include "dslam/mapping/region_split.h"
@@ -20,16 +20,19 @@ struct TwoMovers {
   std::vector<int> mover;  ///< per point: 0 or 1
 };
 
-/// A wall at 4 m and two boxes at 2 m over pixel rectangles a and b, `n` unmarked points each.
-TwoMovers MakeTwoMovers(const cv::Rect& a, const cv::Rect& b, int n, uint32_t seed) {
+/// A wall at 4 m and two boxes at 2 m over pixel rectangles a and b, `n` unmarked points each,
+/// inside points_a and points_b (empty: the whole box).
+TwoMovers MakeTwoMovers(const cv::Rect& a, const cv::Rect& b, int n, uint32_t seed,
+                        const cv::Rect& points_a = {}, const cv::Rect& points_b = {}) {
   TwoMovers scene;
   scene.frame.camera = std::make_shared<PinholeCamera>(kWidth, kHeight, 525, 525, 319.5, 239.5);
   scene.frame.depth_m = cv::Mat(kHeight, kWidth, CV_32FC1, cv::Scalar(4.0f));
   scene.frame.colour = cv::Mat(kHeight, kWidth, CV_8UC3, cv::Scalar(200, 200, 200));
   std::mt19937 rng(seed);
   for (int m = 0; m < 2; ++m) {
-    const cv::Rect& rect = m == 0 ? a : b;
-    scene.frame.depth_m(rect).setTo(static_cast<float>(kDepthM));
+    scene.frame.depth_m(m == 0 ? a : b).setTo(static_cast<float>(kDepthM));
+    const cv::Rect& given = m == 0 ? points_a : points_b;
+    const cv::Rect& rect = given.empty() ? (m == 0 ? a : b) : given;
     std::uniform_int_distribution<int> u(rect.x + 2, rect.x + rect.width - 3);
     std::uniform_int_distribution<int> v(rect.y + 2, rect.y + rect.height - 3);
     for (int i = 0; i < n; ++i) {
@@ -86,6 +89,36 @@ TEST(RegionSplit, TwoMoversAtDifferentVelocitiesAreSplitAtTheirBorder) {
         {rect.x + rect.width / 2.0 - 0.5, rect.y + rect.height / 2.0 - 0.5}, kDepthM);
     EXPECT_LT((region.centroid_world - centre).norm(), 0.05) << m;
     EXPECT_EQ(region.points.size(), 25u);
+    for (PointId id : region.points) EXPECT_EQ(scene.mover[id], m);
+  }
+}
+
+TEST(RegionSplit, MoversWhosePointsCrowdTheirBorderAreJudgedByTheirCells) {
+  // Each mover's points lie within 0.23 m of the common border: their median positions are
+  // closer than split_min_distance_m (0.4 m), the cells each region grows around them are not.
+  const cv::Rect a(120, 100, 180, 300), b(300, 100, 180, 300);
+  const TwoMovers scene =
+      MakeTwoMovers(a, b, 25, 11, cv::Rect(240, 100, 60, 300), cv::Rect(300, 100, 60, 300));
+  DynamicMask mask = ComputeDynamicMask(scene.frame, Eigen::Isometry3d::Identity(), scene.points,
+                                        DynamicMaskConfig());
+  ASSERT_EQ(mask.regions.size(), 1u);
+  const Eigen::Vector3d velocity[2] = {{1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+  EXPECT_EQ(
+      SplitRegions(scene.frame, Eigen::Isometry3d::Identity(), History(mask, scene, velocity, 0.01),
+                   kStampS, {}, DynamicMaskConfig(), ObjectsConfig(), &mask),
+      1);
+  ASSERT_EQ(mask.regions.size(), 2u);
+  const uint16_t label_a = mask.LabelAt(200, 250), label_b = mask.LabelAt(400, 250);
+  ASSERT_NE(label_a, 0);
+  ASSERT_NE(label_b, 0);
+  EXPECT_NE(label_a, label_b);
+  for (int v = 110; v < 390; v += 20) {  // the parts meet at the boxes' border
+    EXPECT_EQ(mask.LabelAt(290, v), label_a) << v;
+    EXPECT_EQ(mask.LabelAt(310, v), label_b) << v;
+  }
+  for (const DynamicRegion& region : mask.regions) {
+    EXPECT_EQ(region.points.size(), 25u);
+    const int m = region.label == label_a ? 0 : 1;
     for (PointId id : region.points) EXPECT_EQ(scene.mover[id], m);
   }
 }

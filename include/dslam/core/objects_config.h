@@ -174,16 +174,17 @@ struct ObjectsConfig {
       s.split_speed_mps);
     v(Field("split_min_points", "-", 1, 10000, "points with a velocity each split part needs"),
       s.split_min_points);
-    // The two groups must also stand side by side in the image: the overlap of their horizontal
-    // ranges (10th-90th percentile of the optical x of their points) at most this share of the
-    // narrower range. A leg moving unlike the body above it overlaps the body's range.
+    // The two parts the region's cells are shared into must also stand side by side in the
+    // image: the overlap of their horizontal ranges (10th-90th percentile of the optical x of
+    // their cells) at most this share of the narrower range.
     v(Field("split_max_overlap", "-", 0.0, 1.0,
-            "largest horizontal overlap of two split groups (share of the narrower)"),
+            "largest horizontal overlap of two split parts (share of the narrower)"),
       s.split_max_overlap);
-    // ... and their points' per-axis median positions at least split_min_distance_m apart (two
-    // people side by side are a body's width apart; parts of one near person are not).
+    // ... and their mean positions across the view (optical x and depth) at least
+    // split_min_distance_m apart (two people side by side are a body's width apart; two halves
+    // of one near person are not).
     v(Field("split_min_distance_m", "m", 0.0, 10.0,
-            "smallest distance of the median positions of two split groups"),
+            "smallest distance of the mean positions of two split parts across the view"),
       s.split_min_distance_m);
     // Regions one above the other in the image (column ranges overlapping by more than
     // split_max_overlap) whose world boxes come within dynamic_mask.margin_m are joined: the

@@ -9,9 +9,9 @@
 // Two regions are joined (JoinStackedRegions) when
 // - their cell column ranges in the image overlap by more than ObjectsConfig::split_max_overlap
 //   of the narrower range (one above the other: the side-by-side test that region_split.h
-//   requires before splitting, reversed; the split measures the overlap on its points' 10th-90th
-//   percentile ranges, the join on all cells, so two split parts whose cells overlap more than
-//   their points do can be joined again), and
+//   requires before splitting, reversed; the split measures the overlap on its parts' 10th-90th
+//   percentile ranges of optical x, the join on the full column ranges, so two split parts can be
+//   joined again when their full ranges overlap by more than their percentile ranges do), and
 // - their world boxes come within DynamicMaskConfig::margin_m of each other along every axis
 //   (two people one behind the other overlap in the image but are a body's depth apart).
 

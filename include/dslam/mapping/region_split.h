@@ -5,19 +5,30 @@
 //
 // Steps (SplitRegions), per region:
 // 0. Two tracked objects whose predicted positions lie in the region's box, at least
-//    ObjectsConfig::split_min_distance_m apart, split it by the nearer prediction of each point
-//    (two people who walked side by side and then stopped: their velocities no longer differ).
-//    Otherwise:
+//    ObjectsConfig::split_min_distance_m apart, give the two centres to split around (two people
+//    who walked side by side and then stopped: their velocities no longer differ). Otherwise:
 // 1. The velocity of each of its points over ObjectsConfig::motion_baseline_s (PointVelocity).
 // 2. Two-means of those velocities, started from the 10th and 90th percentiles along their
 //    principal axis.
-// 3. The split is kept when both groups have at least ObjectsConfig::split_min_points points and
-//    their per-axis median velocities differ by at least ObjectsConfig::split_speed_mps: the
-//    points of one rigid thing differ by noise only.
-// 4. The region's cells are shared out by a breadth-first growth over the region's cells from
-//    both groups' seed cells at once (each cell goes to the group whose points are nearer along
-//    the region); points without a velocity go with their cell. Both parts are split again,
-//    up to kMaxSplitParts parts per region.
+// 3. When both groups have at least ObjectsConfig::split_min_points points and their per-axis
+//    median velocities differ by at least ObjectsConfig::split_speed_mps (the points of one rigid
+//    thing differ by noise only), the groups' per-axis median positions are the two centres.
+// 4. The region's cells are shared out by two-means of their points' positions across the view
+//    (optical x and depth, not the image's vertical), started from the two centres; every point
+//    goes with its cell.
+// 5. The split is kept when the two parts stand side by side: each holds split_min_points of the
+//    region's points, their cells' horizontal ranges (10th-90th percentile of optical x) overlap
+//    by at most ObjectsConfig::split_max_overlap of the narrower range, and their mean positions
+//    across the view are at least split_min_distance_m apart. A leg moving unlike the body above
+//    it gives two centres one above the other: the parts across the view are then two halves of
+//    one body, overlapping or closer than a body's width.
+// Both parts are split again, up to kMaxSplitParts parts per region.
+//
+// Why the parts and not the point groups are tested: a second person emerging beside a nearer
+// one has few points, often near the border of the two, and velocities noisy enough that some
+// land in the other group; the groups' median positions can then lie closer than a body's width
+// while the two bodies' cells do not (measured on the synthetic walking scenarios, BENCHMARKS.md
+// "Regions split across the view").
 
 #include <deque>
 
