@@ -180,6 +180,12 @@ CellParts ShareCells(const CellGrid& grid, const Eigen::Isometry3d& T_camera_wor
   return parts;
 }
 
+/// A region's parts and the part of each of its points.
+struct Split {
+  CellParts cells;
+  std::vector<uint8_t> point_part;  ///< per point of the region: 0 or 1
+};
+
 /// The part of each of `region`'s points: its cell's, or the nearer centre's without a cell.
 std::vector<uint8_t> PointParts(const DynamicRegion& region, const CellParts& parts,
                                 const Eigen::Isometry3d& T_camera_world) {
@@ -266,17 +272,26 @@ int SplitRegions(const RgbdFrame& frame, const Eigen::Isometry3d& T_world_camera
   for (size_t i = 0; i < origin.size(); ++i) origin[i] = i;
   int splits = 0;
   const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
+  // The parts of `region` around `centres` when they stand side by side (steps 4-5).
+  const auto side_by_side = [&](const DynamicRegion& region,
+                                const std::optional<Centres>& centres) -> std::optional<Split> {
+    if (!centres || region.cells < 2) return std::nullopt;
+    if (!grid) grid = std::make_unique<CellGrid>(frame, mask_config);
+    Split split{ShareCells(*grid, T_camera_world, region, mask->labels, *centres), {}};
+    split.point_part = PointParts(region, split.cells, T_camera_world);
+    if (!SideBySide(split.cells, split.point_part, objects_config)) return std::nullopt;
+    return split;
+  };
   for (size_t i = 0; i < mask->regions.size(); ++i) {
     while (parts[origin[i]] < kMaxSplitParts) {
       const DynamicRegion& region = mask->regions[i];
-      std::optional<Centres> centres = TrackCentres(region, predicted, objects_config);
-      if (!centres) centres = VelocityCentres(region, history, stamp_s, objects_config);
-      if (!centres || region.cells < 2) break;
-      if (!grid) grid = std::make_unique<CellGrid>(frame, mask_config);
-      const CellParts cells = ShareCells(*grid, T_camera_world, region, mask->labels, *centres);
-      const std::vector<uint8_t> point_part = PointParts(region, cells, T_camera_world);
-      if (!SideBySide(cells, point_part, objects_config)) break;
-      SplitRegion(*grid, T_world_camera, i, cells, point_part, mask);
+      std::optional<Split> split =
+          side_by_side(region, TrackCentres(region, predicted, objects_config));
+      if (!split) {
+        split = side_by_side(region, VelocityCentres(region, history, stamp_s, objects_config));
+      }
+      if (!split) break;
+      SplitRegion(*grid, T_world_camera, i, split->cells, split->point_part, mask);
       origin.push_back(origin[i]);
       ++parts[origin[i]];
       ++splits;  // region i (its kept part) is tried again

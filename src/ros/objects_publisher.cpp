@@ -9,7 +9,9 @@ namespace dslam {
 namespace ros_layer {
 
 ObjectsPublisher::ObjectsPublisher(ros::NodeHandle& nh, const Config& config, WorkerMode mode)
-    : enabled_(config.objects.enabled), objects_(config), worker_(mode, 2) {
+    : enabled_(config.objects.enabled),
+      objects_(config),
+      worker_(enabled_ ? mode : WorkerMode::kSynchronous, 2) {
   if (!enabled_) return;
   objects_pub_ = nh.advertise<dslam::MovingObjects>("moving_objects", 5);
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("moving_object_markers", 5);

@@ -22,7 +22,9 @@ namespace tools {
 /// Runs MovingObjectTracker on each frame and writes the objects file; times each frame's work.
 /// WorkerMode::kThreaded (--threads): the frames are tracked in order on a worker thread of
 /// their own (OrderedWorker), beside the tracking thread; kSynchronous: inside Add. The file is
-/// the same either way (the tracker sees the same frames in the same order).
+/// the same either way (the tracker sees the same frames in the same order). An error while
+/// tracking a frame is thrown by Add of that frame (synchronous) or by a later Add or Close
+/// (threaded: the frames queued after it are tracked first).
 class ObjectsOutput {
  public:
   /// Opens `path` and writes the header; throws std::runtime_error when it cannot.
@@ -39,7 +41,8 @@ class ObjectsOutput {
   /// [ms] wall time of each frame's dynamic mask and tracking (on the worker thread when threaded).
   const std::vector<double>& times_ms() const { return times_ms_; }
   /// [ms] wall time of each Add on the caller's (tracking) thread: the whole work when
-  /// synchronous, copying the frame's result and queueing it when threaded.
+  /// synchronous; when threaded, copying the frame's result and queueing it, and waiting while
+  /// two frames are queued.
   const std::vector<double>& add_times_ms() const { return add_times_ms_; }
   int object_frames() const { return object_frames_; }  ///< lines written
 

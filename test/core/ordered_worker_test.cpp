@@ -89,6 +89,16 @@ TEST(OrderedWorker, TaskErrorIsRethrownOnceAndLaterTasksStillRun) {
   EXPECT_NO_THROW(worker.Wait());  // handed back once
 }
 
+TEST(OrderedWorker, TaskErrorIsRethrownByTheNextPostWhoseTaskStillRuns) {
+  OrderedWorker worker(WorkerMode::kThreaded, 2);
+  worker.Post([] { throw std::runtime_error("failed"); });
+  while (worker.Pending() != 0) std::this_thread::yield();  // the failing task has run
+  std::atomic<bool> ran{false};
+  EXPECT_THROW(worker.Post([&ran] { ran = true; }), std::runtime_error);
+  EXPECT_NO_THROW(worker.Wait());  // handed back once
+  EXPECT_TRUE(ran.load());         // queued before the error was handed back
+}
+
 TEST(OrderedWorker, DestructorRunsTheQueuedTasks) {
   std::atomic<int> runs{0};
   {

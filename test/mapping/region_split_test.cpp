@@ -142,6 +142,29 @@ TEST(RegionSplit, OneVelocityOrMoversAboveEachOtherStayOneRegion) {
   }
 }
 
+TEST(RegionSplit, VelocitiesSplitWhereTwoTracksOneAboveTheOtherDoNot) {
+  const cv::Rect a(170, 100, 130, 300), b(300, 100, 130, 300);
+  const TwoMovers scene = MakeTwoMovers(a, b, 25, 13);
+  // Two predictions 0.76 m apart, one above the other in mover a: no side-by-side parts.
+  const std::vector<Eigen::Vector3d> stacked = {
+      scene.frame.camera->BackProject({234.5, 150.5}, kDepthM),
+      scene.frame.camera->BackProject({234.5, 350.5}, kDepthM)};
+  const Eigen::Vector3d velocity[2] = {{1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+  DynamicMask mask = ComputeDynamicMask(scene.frame, Eigen::Isometry3d::Identity(), scene.points,
+                                        DynamicMaskConfig());
+  ASSERT_EQ(mask.regions.size(), 1u);
+  EXPECT_EQ(
+      SplitRegions(scene.frame, Eigen::Isometry3d::Identity(), History(mask, scene, velocity, 0.01),
+                   kStampS, stacked, DynamicMaskConfig(), ObjectsConfig(), &mask),
+      1);
+  ASSERT_EQ(mask.regions.size(), 2u);
+  EXPECT_NE(mask.LabelAt(200, 250), mask.LabelAt(400, 250));
+  for (const DynamicRegion& region : mask.regions) {
+    const int m = scene.mover[region.points.front()];
+    for (PointId id : region.points) EXPECT_EQ(scene.mover[id], m);
+  }
+}
+
 TEST(RegionSplit, TwoTrackPredictionsSplitMoversThatStopped) {
   const cv::Rect a(170, 100, 130, 300), b(300, 100, 130, 300);
   const TwoMovers scene = MakeTwoMovers(a, b, 25, 9);

@@ -26,8 +26,9 @@ enum class WorkerMode {
 /// Runs tasks in posting order on one thread (locking policy above).
 class OrderedWorker {
  public:
-  /// Starts the worker thread in WorkerMode::kThreaded. Post blocks while `max_pending` (>= 1)
-  /// tasks wait, so the queue and the memory the tasks capture stay bounded.
+  /// Starts the worker thread in WorkerMode::kThreaded. Post blocks while `max_pending` tasks
+  /// wait, so the queue and the memory the tasks capture stay bounded. Throws
+  /// std::invalid_argument when max_pending < 1.
   OrderedWorker(WorkerMode mode, int max_pending);
 
   /// Runs the tasks still queued, then stops the thread. A task's error is not rethrown here.

@@ -6,7 +6,8 @@
 // Steps (SplitRegions), per region:
 // 0. Two tracked objects whose predicted positions lie in the region's box, at least
 //    ObjectsConfig::split_min_distance_m apart, give the two centres to split around (two people
-//    who walked side by side and then stopped: their velocities no longer differ). Otherwise:
+//    who walked side by side and then stopped: their velocities no longer differ). When there
+//    are none, or their parts fail step 5:
 // 1. The velocity of each of its points over ObjectsConfig::motion_baseline_s (PointVelocity).
 // 2. Two-means of those velocities, started from the 10th and 90th percentiles along their
 //    principal axis.
@@ -15,13 +16,15 @@
 //    thing differ by noise only), the groups' per-axis median positions are the two centres.
 // 4. The region's cells are shared out by two-means of their points' positions across the view
 //    (optical x and depth, not the image's vertical), started from the two centres; every point
-//    goes with its cell.
+//    goes with its cell (a point without a cell of the region: with the nearer part's mean).
 // 5. The split is kept when the two parts stand side by side: each holds split_min_points of the
 //    region's points, their cells' horizontal ranges (10th-90th percentile of optical x) overlap
 //    by at most ObjectsConfig::split_max_overlap of the narrower range, and their mean positions
 //    across the view are at least split_min_distance_m apart. A leg moving unlike the body above
 //    it gives two centres one above the other: the parts across the view are then two halves of
-//    one body, overlapping or closer than a body's width.
+//    one body, closer than a body's width. (A part lies on one side of a cut across the view, so
+//    the overlap only refuses parts at different depths; a single moving thing wider than about
+//    twice split_min_distance_m whose points move differently would be split.)
 // Both parts are split again, up to kMaxSplitParts parts per region.
 //
 // Why the parts and not the point groups are tested: a second person emerging beside a nearer

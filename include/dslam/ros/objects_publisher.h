@@ -28,7 +28,7 @@ namespace ros_layer {
 class ObjectsPublisher {
  public:
   /// Advertises the topics on `nh` (relative names) when config.objects.enabled; `mode` says
-  /// where the tracker runs (kThreaded: its own thread).
+  /// where the tracker runs (kThreaded: its own thread, started only when enabled).
   ObjectsPublisher(ros::NodeHandle& nh, const Config& config, WorkerMode mode);
 
   /// True when the next frame's objects will be computed: the odometry must then fill
@@ -37,7 +37,7 @@ class ObjectsPublisher {
 
   /// Tracks the objects of `frame` (its `result`) and publishes them with `odom_header` (image
   /// stamp, odom frame id); T_base_camera is the camera mount [m]. Threaded, queues the frame
-  /// (its images shared, not copied) and returns.
+  /// (its images shared, not copied) and returns, after waiting while two frames are queued.
   void Publish(const RgbdFrame& frame, const FrameResult& result,
                const std_msgs::Header& odom_header, const Eigen::Isometry3d& T_base_camera);
 
