@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include <opencv2/imgproc.hpp>
+
 namespace dslam {
 namespace {
 
@@ -35,6 +37,13 @@ std::string RgbdFrame::Check() const {
            " differs from the colour image " + colour_size;
   }
   return "";
+}
+
+cv::Mat RgbdFrame::Grey() const {
+  if (colour.channels() == 1) return colour;
+  cv::Mat grey;
+  cv::cvtColor(colour, grey, cv::COLOR_BGR2GRAY);
+  return grey;
 }
 
 }  // namespace dslam

@@ -5,19 +5,11 @@
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/features2d.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "orb_pyramid.h"
 
 namespace dslam {
 namespace {
-
-cv::Mat ToGrey(const cv::Mat& colour) {
-  if (colour.channels() == 1) return colour;
-  cv::Mat grey;
-  cv::cvtColor(colour, grey, cv::COLOR_BGR2GRAY);
-  return grey;
-}
 
 // rBRIEF descriptors of the keypoints of every level (level pixels), one cv::ORB call per level
 // on that level's image of the descriptor pyramid (Pyramids::descriptor: the images cv::ORB's own
@@ -109,7 +101,7 @@ FrameFeatures ExtractFeatures(const RgbdFrame& frame, const FeaturesConfig& conf
                               const DepthNoiseConfig& depth_noise) {
   const std::string problem = frame.Check();
   if (!problem.empty()) throw std::invalid_argument("ExtractFeatures: " + problem);
-  const cv::Mat grey = ToGrey(frame.colour);
+  const cv::Mat grey = frame.Grey();
   const orb::Pyramids pyramids = orb::BuildPyramids(grey, config, true);
   const std::vector<std::vector<cv::KeyPoint>> keypoints =
       orb::DetectLevelKeypoints(pyramids.detection, config);

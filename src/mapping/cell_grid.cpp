@@ -70,14 +70,14 @@ int CellGrid::CellOf(int u, int v) const {
   return (u >= 0 && v >= 0 && Inside(r, c)) ? r * cols_ + c : -1;
 }
 
-double CellGrid::PixelDepth(int u, int v) const {
-  if (u < 0 || v < 0 || u >= frame_.depth_m.cols || v >= frame_.depth_m.rows) return 0.0;
-  const float z = frame_.depth_m.at<float>(v, u);
-  return (std::isfinite(z) && z > 0.0f && z <= max_depth_m_) ? z : 0.0;
+double ValidPixelDepth(const cv::Mat& depth_m, int u, int v, double max_depth_m) {
+  if (u < 0 || v < 0 || u >= depth_m.cols || v >= depth_m.rows) return 0.0;
+  const float z = depth_m.at<float>(v, u);
+  return (std::isfinite(z) && z > 0.0f && z <= max_depth_m) ? z : 0.0;
 }
 
-Eigen::Vector3d CellGrid::BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const {
-  const PinholeCamera& camera = *frame_.camera;
+Eigen::Vector3d BackProjectRawPixel(const PinholeCamera& camera, const Eigen::Vector2d& uv_raw,
+                                    double z) {
   const Eigen::Vector2d uv = camera.distortion().IsZero() ? uv_raw : camera.Undistort(uv_raw);
   return camera.BackProject(uv, z);
 }

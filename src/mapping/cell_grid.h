@@ -1,6 +1,7 @@
 #pragma once
-// Internal to dynamic_mask.cpp: the decimated depth grid the dynamic mask is grown on, and the
-// region growing itself.
+// Internal to part mapping: the decimated depth grid the dynamic mask is grown on (and split on,
+// region_split.cpp), the region growing itself, and the pixel measurement the carried points share
+// (point_carrier.cpp).
 
 #include <cstdint>
 #include <vector>
@@ -16,6 +17,15 @@
 
 namespace dslam {
 
+/// [m] depth of pixel (u, v) of `depth_m` (CV_32FC1) when valid: finite, above 0 and at most
+/// `max_depth_m`; 0 when missing or outside the image.
+double ValidPixelDepth(const cv::Mat& depth_m, int u, int v, double max_depth_m);
+
+/// [m] raw pixel `uv_raw` [px] of `camera` at depth `z` [m] in its optical frame (undistorted
+/// first).
+Eigen::Vector3d BackProjectRawPixel(const PinholeCamera& camera, const Eigen::Vector2d& uv_raw,
+                                    double z);
+
 /// Cells of decimation x decimation pixels over one frame; a cell's depth and colour are those
 /// of its centre pixel. Back-projected cell points are computed on first use and cached.
 class CellGrid {
@@ -30,13 +40,17 @@ class CellGrid {
   /// Cell index of pixel (u, v) [px], -1 outside the grid.
   int CellOf(int u, int v) const;
   /// [m] valid depth of pixel (u, v) (within max_depth_m), 0 when missing or outside.
-  double PixelDepth(int u, int v) const;
+  double PixelDepth(int u, int v) const {
+    return ValidPixelDepth(frame_.depth_m, u, v, max_depth_m_);
+  }
   /// [m] depth of a cell's centre pixel, 0 when missing.
   double CellDepth(int cell) const { return depth_[cell]; }
   /// [m] largest depth difference of continuous neighbours at depth z [m].
   double DepthStep(double z) const { return step_m_ + step_ratio_ * z; }
   /// [m] raw pixel `uv_raw` [px] at depth `z` [m] in the optical frame (undistorted first).
-  Eigen::Vector3d BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const;
+  Eigen::Vector3d BackProjectPixel(const Eigen::Vector2d& uv_raw, double z) const {
+    return BackProjectRawPixel(*frame_.camera, uv_raw, z);
+  }
   /// [m] the cell's centre point in the optical frame (its depth must be valid).
   const Eigen::Vector3d& CellPoint(int cell) const;
   /// [m] CellPoint(cell) computed without caching it (for cells looked at once).

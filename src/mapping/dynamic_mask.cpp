@@ -121,11 +121,16 @@ int SeedCell(const CellGrid& grid, const MovingPoint& point) {
 
 }  // namespace
 
-uint16_t DynamicMask::LabelAt(int u, int v) const {
-  if (labels.empty() || u < 0 || v < 0) return 0;
+int DynamicMask::CellAt(int u, int v) const {
+  if (labels.empty() || u < 0 || v < 0) return -1;
   const int r = v / decimation, c = u / decimation;
-  if (r >= labels.rows || c >= labels.cols) return 0;
-  return labels.at<uint16_t>(r, c);
+  if (r >= labels.rows || c >= labels.cols) return -1;
+  return r * labels.cols + c;
+}
+
+uint16_t DynamicMask::LabelAt(int u, int v) const {
+  const int cell = CellAt(u, v);
+  return cell < 0 ? 0 : labels.ptr<uint16_t>()[cell];
 }
 
 double DynamicMask::MaskedShare() const {

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
+#include "cell_grid.h"
 #include "dslam/tracking/id_set.h"
 
 namespace dslam {
@@ -50,9 +51,8 @@ void PointCarrier::Reset() {
 }
 
 std::vector<cv::Mat> PointCarrier::Pyramid(const RgbdFrame& frame) {
-  cv::Mat grey = frame.colour, half;
-  if (frame.colour.type() == CV_8UC3) cv::cvtColor(frame.colour, grey, cv::COLOR_BGR2GRAY);
-  cv::pyrDown(grey, half);
+  cv::Mat half;
+  cv::pyrDown(frame.Grey(), half);
   std::vector<cv::Mat> pyramid;
   pyramid.swap(spare_pyramid_);  // same sizes as this frame's: no allocation
   cv::buildOpticalFlowPyramid(half, pyramid, window_, levels_ - 1);
@@ -109,19 +109,19 @@ int PointCarrier::Attach(CarriedFlow flow, const RgbdFrame& frame,
   std::vector<std::pair<PointId, cv::Point2f>> carried;
   std::vector<uint8_t> occupied = OccupiedCells(*mask);
   const double max_step_m = max_speed_mps_ * (frame.stamp_s - previous_stamp_s_);
-  const PinholeCamera& camera = *frame.camera;
+  const auto* labels = mask->labels.ptr<uint16_t>();
   for (size_t i = 0; i < flow.ids.size(); ++i) {
     const int u = static_cast<int>(std::lround(flow.uv_raw[i].x));
     const int v = static_cast<int>(std::lround(flow.uv_raw[i].y));
-    const uint16_t label = mask->LabelAt(u, v);
-    if (label == 0) continue;  // off the moving things (or outside the image)
-    const int cell = (v / mask->decimation) * mask->labels.cols + u / mask->decimation;
+    const int cell = mask->CellAt(u, v);
+    if (cell < 0 || labels[cell] == 0) continue;  // off the moving things (or outside the image)
+    const uint16_t label = labels[cell];
     if (occupied[cell]) continue;
-    const float z = frame.depth_m.at<float>(v, u);
-    if (!(std::isfinite(z) && z > 0.0f && z <= max_depth_m_)) continue;
-    const Eigen::Vector2d uv_raw(flow.uv_raw[i].x, flow.uv_raw[i].y);
-    const Eigen::Vector2d uv = camera.distortion().IsZero() ? uv_raw : camera.Undistort(uv_raw);
-    const Eigen::Vector3d p_world = T_world_camera * camera.BackProject(uv, z);
+    const double z = ValidPixelDepth(frame.depth_m, u, v, max_depth_m_);
+    if (z <= 0.0) continue;
+    const Eigen::Vector3d p_world =
+        T_world_camera *
+        BackProjectRawPixel(*frame.camera, Eigen::Vector2d(flow.uv_raw[i].x, flow.uv_raw[i].y), z);
     if ((p_world - flow.from_world[i]).norm() > max_step_m) continue;  // another surface
     DynamicRegion& region = mask->regions[label - 1];
     region.points.push_back(flow.ids[i]);

@@ -26,6 +26,10 @@ struct RgbdFrame {
   /// e.g. "depth image 320x240 differs from the colour image 640x480". Pixel values are not
   /// checked: black, saturated or textureless colour and missing depth are valid input.
   std::string Check() const;
+
+  /// The colour image as 8-bit grey (CV_8UC1): converted from BGR, or `colour` itself when it is
+  /// grey already (shared, not copied).
+  cv::Mat Grey() const;
 };
 
 }  // namespace dslam

@@ -61,6 +61,8 @@ struct DynamicMask {
   cv::Mat labels;
   std::vector<DynamicRegion> regions;  ///< regions[i].label == i + 1
 
+  /// Cell index (row * cols + col) of pixel (u, v) of the full image [px]; -1 outside the grid.
+  int CellAt(int u, int v) const;
   /// Label of pixel (u, v) of the full image [px]; 0 outside the grid.
   uint16_t LabelAt(int u, int v) const;
   /// Share [0, 1] of the grid's cells that are masked.

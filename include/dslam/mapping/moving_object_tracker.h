@@ -6,8 +6,9 @@
 // regions split where two things move differently (region_split.h) and joined where they are
 // parts of one thing (region_join.h, objects.join_stacked_regions); the regions as observations,
 // and the tracker (object_tracker.h).
-// Runs on the thread that consumes FrameResults (the tracking thread of dslam_run_dataset, the
-// node's worker), after Slam::ProcessFrame.
+// Runs after Slam::ProcessFrame on one thread, frame by frame in order: the objects' own thread
+// (OrderedWorker, in dslam_run_dataset --threads and the node with ~backend_threads) or the thread
+// that consumes FrameResults.
 
 #include <deque>
 #include <vector>
