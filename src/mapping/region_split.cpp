@@ -30,9 +30,36 @@ Eigen::Vector3d AxisMedians(const std::vector<Eigen::Vector3d>& values) {
   return median;
 }
 
+/// Two-means (Lloyd) of `values` from `centres`, at most `max_iterations` rounds: `group` gets 0
+/// or 1 per value and `centres` the groups' means. False, with the last round's groups and the
+/// centres before it, when a group empties.
+template <typename Vector>
+bool TwoMeansFrom(const std::vector<Vector>& values, int max_iterations,
+                  std::array<Vector, 2>* centres, std::vector<uint8_t>* group) {
+  using Scalar = typename Vector::Scalar;
+  group->assign(values.size(), 0);
+  for (int iteration = 0; iteration < max_iterations; ++iteration) {
+    bool changed = iteration == 0;
+    std::array<Vector, 2> sums = {Vector::Zero(), Vector::Zero()};
+    int counts[2] = {0, 0};
+    for (size_t i = 0; i < values.size(); ++i) {
+      const uint8_t g = (values[i] - (*centres)[1]).squaredNorm() <
+                        (values[i] - (*centres)[0]).squaredNorm();
+      changed |= g != (*group)[i];
+      (*group)[i] = g;
+      sums[g] += values[i];
+      ++counts[g];
+    }
+    if (counts[0] == 0 || counts[1] == 0) return false;
+    for (int g = 0; g < 2; ++g) (*centres)[g] = sums[g] / static_cast<Scalar>(counts[g]);
+    if (!changed) break;
+  }
+  return true;
+}
+
 /// Two-means of `values` started from the 10th and 90th percentiles along their principal axis:
 /// the group (0 or 1) of each value; empty when the values do not spread.
-std::vector<int> TwoMeans(const std::vector<Eigen::Vector3d>& values) {
+std::vector<uint8_t> TwoMeans(const std::vector<Eigen::Vector3d>& values) {
   const int n = static_cast<int>(values.size());
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& v : values) mean += v;
@@ -44,24 +71,11 @@ std::vector<int> TwoMeans(const std::vector<Eigen::Vector3d>& values) {
   std::vector<std::pair<double, int>> along;
   for (int i = 0; i < n; ++i) along.emplace_back(axis.dot(values[i] - mean), i);
   std::sort(along.begin(), along.end());
-  Eigen::Vector3d centres[2] = {values[along[n / 10].second], values[along[n - 1 - n / 10].second]};
+  std::array<Eigen::Vector3d, 2> centres = {values[along[n / 10].second],
+                                            values[along[n - 1 - n / 10].second]};
   if ((centres[0] - centres[1]).squaredNorm() == 0.0) return {};
-  std::vector<int> group(n, -1);
-  for (int iteration = 0; iteration < 20; ++iteration) {
-    bool changed = false;
-    Eigen::Vector3d sums[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-    int counts[2] = {0, 0};
-    for (int i = 0; i < n; ++i) {
-      const int g = (values[i] - centres[1]).squaredNorm() < (values[i] - centres[0]).squaredNorm();
-      changed |= g != group[i];
-      group[i] = g;
-      sums[g] += values[i];
-      ++counts[g];
-    }
-    if (counts[0] == 0 || counts[1] == 0) return {};
-    for (int g = 0; g < 2; ++g) centres[g] = sums[g] / counts[g];
-    if (!changed) break;
-  }
+  std::vector<uint8_t> group;
+  if (!TwoMeansFrom(values, 20, &centres, &group)) return {};
   return group;
 }
 
@@ -93,7 +107,7 @@ std::optional<Centres> VelocityCentres(const DynamicRegion& region,
     positions.push_back(region.points_world[i]);
   }
   if (static_cast<int>(velocities.size()) < 2 * config.split_min_points) return std::nullopt;
-  const std::vector<int> group = TwoMeans(velocities);
+  const std::vector<uint8_t> group = TwoMeans(velocities);
   if (group.empty()) return std::nullopt;
   std::vector<Eigen::Vector3d> members[2], where[2];
   for (size_t k = 0; k < group.size(); ++k) {
@@ -160,23 +174,7 @@ CellParts ShareCells(const CellGrid& grid, const Eigen::Isometry3d& T_camera_wor
     parts.cells.push_back(cell);
     parts.across.push_back(Across(grid.CellPointOnce(cell)));
   }
-  parts.part.assign(parts.cells.size(), 0);
-  for (int iteration = 0; iteration < kShareIterations; ++iteration) {
-    Eigen::Vector2f sums[2] = {Eigen::Vector2f::Zero(), Eigen::Vector2f::Zero()};
-    int counts[2] = {0, 0};
-    bool changed = false;
-    for (size_t k = 0; k < parts.cells.size(); ++k) {
-      const Eigen::Vector2f& p = parts.across[k];
-      const uint8_t g = (p - parts.centres[1]).squaredNorm() < (p - parts.centres[0]).squaredNorm();
-      changed |= g != parts.part[k];
-      parts.part[k] = g;
-      sums[g] += p;
-      ++counts[g];
-    }
-    if (counts[0] == 0 || counts[1] == 0) break;
-    for (int g = 0; g < 2; ++g) parts.centres[g] = sums[g] / static_cast<float>(counts[g]);
-    if (!changed && iteration > 0) break;
-  }
+  TwoMeansFrom(parts.across, kShareIterations, &parts.centres, &parts.part);
   return parts;
 }
 
