@@ -29,10 +29,18 @@ ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& ca
   projected.ids.reserve(candidates.size());
   const std::vector<double>& scales = features.octave_scale;
   const double log_scale = scales.size() < 2 ? 0.0 : std::log(scales[1]);
+  const Eigen::Isometry3d T_camera_last =
+      search.last_frame == nullptr
+          ? Eigen::Isometry3d::Identity()
+          : T_camera_world * search.last_frame->T_camera_world.inverse();
   for (PointId id : candidates) {
     const MapPoint* point = map.Find(id);
     if (point == nullptr) continue;
-    const Eigen::Vector3d p_camera = T_camera_world * point->p_world;
+    Eigen::Vector3d p_camera = T_camera_world * point->p_world;
+    if (search.last_frame != nullptr && point->marked) {
+      const auto last = search.last_frame->by_point.find(id);
+      if (last != search.last_frame->by_point.end()) p_camera = T_camera_last * last->second.y_camera;
+    }
     if (p_camera.z() < search.min_depth_m) continue;
     const Eigen::Vector2d uv = camera.Project(p_camera);
     if (!camera.InImage(uv)) continue;

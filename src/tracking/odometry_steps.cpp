@@ -51,6 +51,7 @@ LocalMapSearch Odometry::SearchWithin(double radius_px, bool count_visible) cons
   search.unmarked_max_offset_m = config_.tracking.unmarked_max_offset_m;
   search.min_depth_m = config_.tracking.search_min_depth_m;
   search.count_visible = count_visible;
+  if (config_.tracking.follow_last_measurement) search.last_frame = &previous_;
   return search;
 }
 

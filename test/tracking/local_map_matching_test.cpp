@@ -76,6 +76,37 @@ TEST_F(LocalMapMatchingTest, UnmarkedPointsMatchOnlyNearTheirLastPosition) {
   }
 }
 
+TEST_F(LocalMapMatchingTest, MarkedPointsAreSearchedAroundTheirLastMeasurement) {
+  // The map position is 0.06 m (15 px) from the feature; the last frame, 0.1 m to the left of
+  // this one, measured the point at the feature's 3D position: (0.1, 0, 2) in its camera frame.
+  const Eigen::Vector3d p_world(0.06, 0.0, 2.0);
+  const PointId marked = AddPoint(&map_, frame_, p_world, true);
+  const PointId unmeasured = AddPoint(&map_, frame_, p_world, true);
+  FrameMeasurements last_frame;
+  last_frame.T_camera_world = Eigen::Translation3d(0.1, 0.0, 0.0) * Eigen::Isometry3d::Identity();
+  PointMeasurement measured;
+  measured.y_camera = Eigen::Vector3d(0.1, 0.0, 2.0);
+  measured.covariance = Eigen::Matrix3d::Identity() * 1e-4;
+  last_frame.by_point.emplace(marked, measured);
+  LocalMapSearch search;
+  search.radius_px = 10.0;
+  const ProjectedLocalMap from_map = ProjectLocalMap(map_, {marked}, frame_, camera_,
+                                                     Eigen::Isometry3d::Identity(), search);
+  ASSERT_EQ(from_map.points.size(), 1u);
+  EXPECT_NEAR(from_map.points[0].uv_ideal.x(), 335.0, 1e-9);
+  search.last_frame = &last_frame;
+  const ProjectedLocalMap followed = ProjectLocalMap(map_, {marked, unmeasured}, frame_, camera_,
+                                                     Eigen::Isometry3d::Identity(), search);
+  ASSERT_EQ(followed.points.size(), 2u);
+  EXPECT_NEAR(followed.points[0].uv_ideal.x(), 320.0, 1e-9);
+  EXPECT_NEAR(followed.points[1].uv_ideal.x(), 335.0, 1e-9);  // no measurement: map position
+  std::vector<bool> taken(1, false);
+  const std::vector<PointMatch> matches = MatchLocalMap(
+      &map_, {unmeasured, marked}, frame_, camera_, Eigen::Isometry3d::Identity(), search, &taken);
+  ASSERT_EQ(matches.size(), 1u);
+  EXPECT_EQ(matches[0].id, marked);
+}
+
 TEST_F(LocalMapMatchingTest, OnlyMatchLocalMapCountsVisibility) {
   const PointId inside = AddPoint(&map_, frame_, Eigen::Vector3d(0.0, 0.0, 2.0), true);
   const PointId outside = AddPoint(&map_, frame_, Eigen::Vector3d(5.0, 0.0, 2.0), true);

@@ -30,9 +30,9 @@ struct BackendConfig {
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
     // Off by default until it beats the front end alone on every benchmark sequence: with static
-    // point determination over the window it helps walking (over 20 seeds), walking_static,
-    // walking_halfsphere and Bonn but not close_person or slow_box (BENCHMARKS.md, "Back end on
-    // or off, seeds 1-5 and `walking` over 20 seeds").
+    // point determination over the window it helps walking (over 20 seeds), walking_halfsphere
+    // and close_person but costs slow_box and Bonn (BENCHMARKS.md, "Marked points followed from
+    // their last measurement").
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
     // Algorithm 1 (window_static_points.h) runs before local BA, which then uses the points that
     // stayed marked. Needs static_points.enabled.

@@ -34,6 +34,10 @@ struct LocalMapSearch {
   /// MatchLocalMap increments times_visible of every point that projects into the image (the found
   /// ratio used by map culling); otherwise it writes no map point.
   bool count_visible = false;
+  /// When set, a marked point measured (with depth) in this frame is projected from that
+  /// measurement, moved into the world with the frame's pose, instead of from its p_world: a
+  /// point on a slowly moving object is then searched where it was one frame ago.
+  const FrameMeasurements* last_frame = nullptr;
 };
 
 /// Map points projected into a frame, ready for ClaimLocalMapMatches.
@@ -43,7 +47,8 @@ struct ProjectedLocalMap {
 };
 
 /// Projects the map points `candidates` into the frame with `T_camera_world`, each with its
-/// search radius from `search` (by the point's `marked`). Points nearer than search.min_depth_m
+/// search radius from `search` (by the point's `marked`) and from p_world (or from its
+/// measurement in search.last_frame). Points nearer than search.min_depth_m
 /// or outside the image are skipped; search.count_visible is not read here (see MatchLocalMap).
 ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& candidates,
                                   const FrameFeatures& features, const PinholeCamera& camera,
