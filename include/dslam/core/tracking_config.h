@@ -62,11 +62,10 @@ struct TrackingConfig {
       s.window_keyframes);
     v(Field("search_radius_px", "px", 1.0, 200.0, "projection search radius (octave 0)"),
       s.search_radius_px);
-    // A marked point on an object that moves slowly (too slowly for the front end to see at
-    // once) drifts away from its map position and would be lost and made anew every few frames;
-    // searched around where it was last measured, it stays one point whose motion accumulates
-    // across keyframes (LocalMapSearch::last_frame, local_map_matching.h). On by default: Bonn
-    // crowd 300-599 tracks 300 of 300 frames (294 without), mean ATE over seeds 1-5
+    // A marked point's map position is where it was created (fuse_static_points off); projected
+    // from its measurement in the last tracked frame instead, more points stay matched where
+    // that position has aged (LocalMapSearch::last_frame, local_map_matching.h). On by default:
+    // Bonn crowd 300-599 tracks 300 of 300 frames (294 without), mean ATE over seeds 1-5
     // walking_static 18.7 -> 15.4 mm, walking_halfsphere 22.3 -> 20.8 (BENCHMARKS.md).
     v(Flag("follow_last_measurement",
            "search marked points measured in the last tracked frame around that measurement "
