@@ -18,6 +18,15 @@ int PredictOctave(const MapPoint& point, double distance_m, const std::vector<do
   return std::clamp(octave, 0, static_cast<int>(scales.size()) - 1);
 }
 
+// The measurement of `point` (id `id`) in search.last_frame when it is marked and was measured
+// there, else nullptr.
+const PointMeasurement* LastMeasurement(const LocalMapSearch& search, PointId id,
+                                        const MapPoint& point) {
+  if (search.last_frame == nullptr || !point.marked) return nullptr;
+  const auto found = search.last_frame->by_point.find(id);
+  return found == search.last_frame->by_point.end() ? nullptr : &found->second;
+}
+
 }  // namespace
 
 ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& candidates,
@@ -30,17 +39,14 @@ ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& ca
   const std::vector<double>& scales = features.octave_scale;
   const double log_scale = scales.size() < 2 ? 0.0 : std::log(scales[1]);
   const Eigen::Isometry3d T_camera_last =
-      search.last_frame == nullptr
-          ? Eigen::Isometry3d::Identity()
-          : T_camera_world * search.last_frame->T_camera_world.inverse();
+      search.last_frame == nullptr ? Eigen::Isometry3d::Identity()
+                                   : T_camera_world * search.last_frame->T_camera_world.inverse();
   for (PointId id : candidates) {
     const MapPoint* point = map.Find(id);
     if (point == nullptr) continue;
-    Eigen::Vector3d p_camera = T_camera_world * point->p_world;
-    if (search.last_frame != nullptr && point->marked) {
-      const auto last = search.last_frame->by_point.find(id);
-      if (last != search.last_frame->by_point.end()) p_camera = T_camera_last * last->second.y_camera;
-    }
+    const PointMeasurement* last = LastMeasurement(search, id, *point);
+    const Eigen::Vector3d p_camera =
+        last != nullptr ? T_camera_last * last->y_camera : T_camera_world * point->p_world;
     if (p_camera.z() < search.min_depth_m) continue;
     const Eigen::Vector2d uv = camera.Project(p_camera);
     if (!camera.InImage(uv)) continue;

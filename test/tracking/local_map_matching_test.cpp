@@ -90,8 +90,8 @@ TEST_F(LocalMapMatchingTest, MarkedPointsAreSearchedAroundTheirLastMeasurement) 
   last_frame.by_point.emplace(marked, measured);
   LocalMapSearch search;
   search.radius_px = 10.0;
-  const ProjectedLocalMap from_map = ProjectLocalMap(map_, {marked}, frame_, camera_,
-                                                     Eigen::Isometry3d::Identity(), search);
+  const ProjectedLocalMap from_map =
+      ProjectLocalMap(map_, {marked}, frame_, camera_, Eigen::Isometry3d::Identity(), search);
   ASSERT_EQ(from_map.points.size(), 1u);
   EXPECT_NEAR(from_map.points[0].uv_ideal.x(), 335.0, 1e-9);
   search.last_frame = &last_frame;

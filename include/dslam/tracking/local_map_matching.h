@@ -35,8 +35,8 @@ struct LocalMapSearch {
   /// ratio used by map culling); otherwise it writes no map point.
   bool count_visible = false;
   /// When set, a marked point measured (with depth) in this frame is projected from that
-  /// measurement, moved into the world with the frame's pose, instead of from its p_world: a
-  /// point on a slowly moving object is then searched where it was one frame ago.
+  /// measurement, moved into the world with the frame's pose, instead of from its p_world (where
+  /// it was created, unless fused or refined): it is searched where it was seen one frame ago.
   const FrameMeasurements* last_frame = nullptr;
 };
 
