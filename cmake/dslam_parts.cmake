@@ -95,7 +95,18 @@ function(dslam_test name)
   catkin_add_gtest(${name} ${T_SOURCES})
   target_link_libraries(${name} ${T_LIBRARIES} gtest_main)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test)
-  target_compile_definitions(${name} PRIVATE DSLAM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  # DSLAM_SOURCE_DIR (the repository's path, for tests that read its files) only on the sources
+  # that use it or include a helper that does: an absolute path in the command line keeps
+  # ccache from reusing an object compiled in another checkout (scripts/workspace.sh sets
+  # CCACHE_BASEDIR for the others).
+  foreach(source ${T_SOURCES})
+    file(STRINGS ${CMAKE_CURRENT_SOURCE_DIR}/${source} uses
+         REGEX "DSLAM_SOURCE_DIR|fuzz/replay.h|support/generated_block.h")
+    if(uses)
+      set_property(SOURCE ${source} APPEND PROPERTY
+        COMPILE_DEFINITIONS DSLAM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+    endif()
+  endforeach()
   dslam_sanitize(${name})
 endfunction()
 

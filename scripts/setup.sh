@@ -3,11 +3,10 @@
 # packages dslam needs (skipped when already installed) and builds the catkin workspace
 # build/ws (Release, -j2) whose src/dslam links to this repository's files. Idempotent; a re-run with
 # nothing changed takes seconds. Prints the workspace path; `source build/ws/devel/setup.bash`.
+# Extra arguments go to catkin_make: -DVAR=VALUE (pass the same ones on every call of one
+# workspace, scripts/workspace.sh says why) and make targets.
 set -euo pipefail
-export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"  # a non-Debian python3 must not shadow Debian's
-REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-WS="${DSLAM_WS:-$REPO/build/ws}"
-JOBS="${DSLAM_JOBS:-2}"
+source "$(dirname "${BASH_SOURCE[0]}")/workspace.sh"
 
 PACKAGES=(
   build-essential cmake git ccache
@@ -52,11 +51,7 @@ for entry in "$REPO"/* "$REPO"/.clang-format; do
 done
 for link in "$PKG"/*; do [[ -e "$link" ]] || rm -f "$link"; done  # entries removed from the repo
 
-export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
-export CCACHE_DIR="${CCACHE_DIR:-$REPO/build/ccache}"
-cd "$WS"
-echo "[setup] building $WS (Release, -j$JOBS)"
-catkin_make -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 \
-  -DPython3_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON -j"$JOBS" "$@" \
-  > "$WS/build.log" 2>&1 || { tail -n 60 "$WS/build.log"; echo "[setup] build failed: $WS/build.log"; exit 1; }
+echo "[setup] building $WS (Release, -j$JOBS, compiler cache $CCACHE_DIR)"
+dslam_catkin_make "$@" > "$WS/build.log" 2>&1 \
+  || { tail -n 60 "$WS/build.log"; echo "[setup] build failed: $WS/build.log"; exit 1; }
 echo "[setup] ok: source $WS/devel/setup.bash"
