@@ -8,6 +8,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "dslam/core/config_markdown.h"
+
 namespace dslam {
 namespace {
 
@@ -34,44 +36,6 @@ class YamlReader {
   const YAML::Node& node_;
   std::string prefix_;
   std::set<std::string>* used_;
-};
-
-/// Visitor that appends one Markdown table row per field.
-class MarkdownWriter {
- public:
-  MarkdownWriter(std::string prefix, std::ostringstream* out)
-      : prefix_(std::move(prefix)), out_(out) {}
-
-  template <typename T>
-  void operator()(const FieldInfo& info, const T& value) const {
-    *out_ << "| `" << prefix_ << info.name << "` | " << Value(value) << " | " << info.unit << " | "
-          << Range(info, value) << " | " << info.doc << " |\n";
-  }
-
- private:
-  static std::string Value(bool v) { return v ? "true" : "false"; }
-  static std::string Value(const std::string& v) { return "`" + v + "`"; }
-  template <typename T>
-  static std::string Value(const T& v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
-  static std::string Range(const FieldInfo& info, const std::string&) {
-    std::string r;
-    for (const auto& c : info.choices) r += (r.empty() ? "" : ", ") + c;
-    return r;
-  }
-  static std::string Range(const FieldInfo&, bool) { return ""; }
-  template <typename T>
-  static std::string Range(const FieldInfo& info, const T&) {
-    std::ostringstream s;
-    s << "[" << (info.min_value == kNoMin ? std::string("-inf") : Value(info.min_value)) << ", "
-      << (info.max_value == kNoMax ? std::string("inf") : Value(info.max_value)) << "]";
-    return s.str();
-  }
-  std::string prefix_;
-  std::ostringstream* out_;
 };
 
 /// Visitor that appends one `key: value  # [unit] doc` line per field.
@@ -199,10 +163,10 @@ std::string DescribeConfigYaml(const Config& config) {
 
 std::string DescribeConfigMarkdown(const Config& defaults) {
   std::ostringstream out;
-  out << "| parameter | default | unit | range | meaning |\n|---|---|---|---|---|\n";
+  out << MarkdownFieldTableHeader();
   Config::Sections(defaults, [&](const char* name, const auto& section) {
     using Section = std::decay_t<decltype(section)>;
-    Section::Fields(section, MarkdownWriter(std::string(name) + ".", &out));
+    Section::Fields(section, MarkdownFieldWriter(std::string(name) + ".", &out));
   });
   return out.str();
 }

@@ -10,8 +10,8 @@ namespace dslam {
 namespace ros_layer {
 
 /// Top-level private parameters of dslam/OdometryNodelet (~odom_frame, ~queue_size, ...). Each
-/// field's unit, range and meaning are given in Fields() (the one source; the README's table of the
-/// ROS layer's parameters lists the same).
+/// field's unit, range and meaning are given in Fields(), the one source: docs/parameters.md's
+/// table of the ROS layer is generated from it (DescribeNodeConfigMarkdown, a test checks it).
 struct NodeConfig {
   std::string odom_frame = "odom";
   std::string base_frame = "base_link";
@@ -38,14 +38,17 @@ struct NodeConfig {
     v(Field("base_frame", "-", 0, 0, "robot body frame, x forward, z up (REP 103)"), s.base_frame);
     v(Field("camera_frame", "-", 0, 0, "colour camera optical frame; empty: image frame id"),
       s.camera_frame);
-    v(Flag("publish_tf", "broadcast odom -> base_frame TF (and the default mount)"), s.publish_tf);
+    v(Flag("publish_tf",
+           "broadcast odom_frame -> base_frame TF (and the default mount when TF has none)"),
+      s.publish_tf);
     v(Flag("exact_sync", "ExactTime instead of ApproximateTime"), s.exact_sync);
     v(Field("queue_size", "-", 1, 1000, "synchroniser queue length per input"), s.queue_size);
     v(Field("camera_yaml", "-", 0, 0, "camera.yaml with calibrated intrinsics; empty: camera_info"),
       s.camera_yaml);
     v(Flag("rectified_input",
            "the colour and depth topics are rectified (image_rect*): intrinsics from camera_info "
-           "P, no distortion; false: raw images, K and D"),
+           "P, no distortion (image_pipeline's convention); false: raw images, K and D (TUM "
+           "bags, tum_to_bag)"),
       s.rectified_input);
     v(Field("path_max_poses", "-", 1, 10000000, "poses kept in the path message (a ring)"),
       s.path_max_poses);
@@ -53,8 +56,10 @@ struct NodeConfig {
             "highest rate at which the path is published (each message carries the whole ring)"),
       s.path_rate_hz);
     v(Field("trajectory_stream", "-", 0, 0,
-            "file to which every tracked pose is appended as it goes (TUM format), keeping none "
-            "in memory; earlier segments beside it as <stem>.seg<N><ext>; empty: keep in memory"),
+            "file to which every tracked pose is appended (and flushed) as it goes (TUM format), "
+            "keeping none in memory; earlier segments are renamed to <stem>.seg<N><ext> beside "
+            "it, and save_trajectory copies these files; empty: poses kept in memory. Relative "
+            "paths are relative to the node's working directory (ROS_HOME under roslaunch)"),
       s.trajectory_stream);
     v(Field("image_transport", "-", 0, 0,
             "image_transport of the colour image (raw, compressed, ...)"),
@@ -63,13 +68,16 @@ struct NodeConfig {
             "image_transport of the depth image (raw, compressedDepth, ...)"),
       s.depth_image_transport);
     v(Field("input_timeout_s", "s", 0.1, 3600.0,
-            "warn when images arrive but no synchronized set was formed for this long"),
+            "when images arrive but no synchronized set is formed for this long, a warning names "
+            "the missing input (or the stamps that never match)"),
       s.input_timeout_s);
-    v(Field("tf_wait_s", "s", 0.0, 60.0, "wait for the camera mount in TF at the first frame"),
+    v(Field("tf_wait_s", "s", 0.0, 60.0,
+            "wait at the first frame for base_frame <- camera frame (the mount) in TF"),
       s.tf_wait_s);
     v(Flag("backend_threads",
-           "back end (backend.enabled) and moving objects each on a thread of their own beside "
-           "tracking; false: both on the worker thread"),
+           "back end (backend.enabled; also the static map's fusion, with the back end off too) "
+           "and moving objects each on a thread of their own beside tracking (objects frame by "
+           "frame in order); false: both on the worker thread (synchronous)"),
       s.backend_threads);
     v(Field("static_map_rate_hz", "Hz", 0.01, 100.0,
             "highest rate at which static_map is rebuilt and published (map.enabled; only while "
@@ -77,6 +85,10 @@ struct NodeConfig {
       s.static_map_rate_hz);
   }
 };
+
+/// The Markdown table of every NodeConfig parameter (name with `~`, default, unit, range,
+/// meaning) at its default, as docs/parameters.md shows it (dslam_node_params_doc prints it).
+std::string DescribeNodeConfigMarkdown();
 
 }  // namespace ros_layer
 }  // namespace dslam
