@@ -43,7 +43,7 @@ def render(scenario, seed, frames, cache, bin_dir=BIN):
 
 # The variants of every row, run in the same invocation: dslam, and the two baselines.
 VARIANTS = {
-    "dslam": [],                                   # the defaults (back end off, see README)
+    "dslam": [],                                   # the defaults (back end off, docs/how-it-works.md)
     "backend_on": ["--backend", "on"],             # local mapping after keyframes
     "static_off": ["--static-points", "off"],      # static-world baseline
 }

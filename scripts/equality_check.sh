@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Proves a refactor by equality: runs dslam_run_dataset from two builds on every benchmark
-# sequence of BENCHMARKS.md (the 7 synthetic scenarios x seeds 1-3, 300 frames, rendered once
-# into the cache by the first build's dslam_synth; plus ../shared/data when present), static points
-# on and off, and compares the trajectories byte for byte. Also renders every scenario (40 frames)
+# sequence of BENCHMARKS.md (the 8 synthetic scenarios of SCENARIOS below x seeds 1-3, 300
+# frames, rendered once into the cache by the first build's dslam_synth; plus ../shared/data when
+# present), static points on and off, and compares the trajectories byte for byte. Also renders every scenario (40 frames)
 # with both builds' dslam_synth and compares the files. Exit 0: all identical.
 # Usage: scripts/equality_check.sh BEFORE_BIN_DIR AFTER_BIN_DIR [OUT_DIR=build/equality]
 # (a BIN_DIR is a workspace's devel/lib/dslam, e.g. of a `git worktree` of the old commit built

@@ -1,5 +1,5 @@
 #pragma once
-// dslam_run_dataset's command line: the options, their parsing and the usage text (the README's
+// dslam_run_dataset's command line: the options, their parsing and the usage text (docs/tools-and-data.md's
 // option table describes each).
 
 #include <string>

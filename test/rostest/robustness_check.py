@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """rostest: hand-made input sets into the dslam nodelet, one at a time (each waits for its status
-message), checking the documented behaviour of each robustness case (README, "Frames and
+message), checking the documented behaviour of each robustness case (docs/ros-interface.md, "Frames and
 conventions"): skipped sets reported as `rejected`, the reset service keeping the odometry
 continuous, time going backwards starting a new trajectory segment, warnings for frame ids, gaps
 and a missing camera_info, the streamed and saved segment files, the bounded path, and an

@@ -26,19 +26,24 @@ namespace dslam {
 
 /// What one local bundle adjustment did.
 struct LocalBaStats {
-  bool ran = false;         ///< false: too few keyframes or points (nothing changed)
-  int keyframes = 0;        ///< [-] keyframes whose poses were optimised
-  int fixed_keyframes = 0;  ///< [-] keyframes held fixed
-  int points = 0;           ///< [-] map points optimised
-  int measurements = 0;     ///< [-] RGB-D measurements (residuals) in the first round
-  int outliers = 0;         ///< [-] measurements left out by the final chi-square test
-  int iterations = 0;       ///< [-] solver iterations, both rounds
-  double time_ms = 0.0;     ///< [ms] wall time
+  bool ran = false;  ///< false: too few keyframes or points (nothing changed)
+  /// [-] window keyframes after the oldest `ba_fixed_keyframes`: free, except those that
+  /// measure fewer than `ba_min_keyframe_points` optimised points (also held fixed)
+  int keyframes = 0;
+  /// [-] `ba_fixed_keyframes`, the oldest window keyframes held fixed (keyframes held for too
+  /// few points are counted in `keyframes`, not here)
+  int fixed_keyframes = 0;
+  int points = 0;        ///< [-] map points optimised
+  int measurements = 0;  ///< [-] RGB-D measurements (residuals) in the first round
+  int outliers = 0;      ///< [-] measurements left out by the final chi-square test
+  int iterations = 0;    ///< [-] solver iterations, both rounds
+  double time_ms = 0.0;  ///< [ms] wall time
   /// [m], [deg] largest move of a keyframe's camera centre and rotation from the front end's pose
   double largest_correction_m = 0.0, largest_correction_deg = 0.0;
   /// [-] largest squared Mahalanobis size of a correction under the front end's pose information
   double largest_correction_chi2 = 0.0;
-  /// The solution moved a keyframe further than ba_max_correction_m / _deg: not applied.
+  /// The solution moved a keyframe further than `ba_max_correction_chi2` (under its front-end
+  /// pose information), `ba_max_correction_m` or `ba_max_correction_deg` allow: not applied.
   bool rejected = false;
 };
 

@@ -42,14 +42,17 @@ struct BackendConfig {
       s.spd_min_covisible_points);
     // The paper unmarks every point outside the largest-volume component, isolated points (all
     // their edges inconsistent) included. Off by default: in static scenes these are mostly
-    // points with a bad measurement, not movers (BENCHMARKS.md, "Back end").
+    // points with a bad measurement, not movers (`git show 0da3eda:BENCHMARKS.md`, section
+    // "Back end, part 2": it labels 1.4 % of static_room's points dynamic and costs close_person
+    // and Bonn).
     v(Flag("spd_unmark_isolated", "points whose tested edges are all inconsistent lose their mark"),
       s.spd_unmark_isolated);
     // Each keyframe's rotation error turns an edge l into an error of about l x dtheta in its
     // measurement; the front end's pose information does not see drift, so this sigma is added
     // to every window measurement's covariance (CorrelationInput::rotation_covariance). 0.3 deg
-    // was measured better than 0 and 0.1 on the synthetic crowds (BENCHMARKS.md, "Back end, part
-    // 2"); 0 tests with the points' noise alone.
+    // was measured better than 0 and 0.1 on the synthetic crowds (`git show 0da3eda:BENCHMARKS.md`,
+    // section "Back end, part 2"; removed from the current file by bf56fd9); 0 tests with the
+    // points' noise alone.
     v(Field("spd_rotation_sigma_deg", "deg", 0.0, 10.0,
             "rotation uncertainty of a window keyframe in the edge tests"),
       s.spd_rotation_sigma_deg);

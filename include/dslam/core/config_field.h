@@ -1,6 +1,6 @@
 #pragma once
 // Field visitors for the Config tree: one description of every parameter (name, unit, bounds,
-// documentation) drives validation, YAML/rosparam loading and the README's parameter table.
+// documentation) drives validation, YAML/rosparam loading and the parameter tables of docs/parameters.md.
 
 #include <limits>
 #include <stdexcept>

@@ -27,7 +27,7 @@ struct MapConfig {
     // The ROS node's switch (static_map, save_map); dslam_run_dataset fuses when --map is given.
     v(Flag("enabled", "fuse keyframes into the static map"), s.enabled);
     // Memory: a surface of A m^2 takes about A / voxel_size_m^2 voxels, each about 92 bytes (the
-    // README's Static map section has the measurement).
+    // docs/how-it-works.md's Static map section has the measurement).
     v(Field("voxel_size_m", "m", 0.005, 1.0, "edge of a map voxel (one point per voxel)"),
       s.voxel_size_m);
     // The memory bound: whatever lies outside the cube is dropped as keyframes are fused.
@@ -37,7 +37,7 @@ struct MapConfig {
     v(Field("pixel_step", "px", 1, 64, "keyframe depth is sampled every pixel_step pixels"),
       s.pixel_step);
     // The depth model's range (depth_noise.max_depth_m); at 4 m the synthetic rooms' far walls
-    // were missing from the map (README, Static map).
+    // were missing from the map (docs/how-it-works.md, Static map).
     v(Field("max_depth_m", "m", 0.1, 100.0,
             "depths beyond are not fused, points beyond a keyframe's depth range get no vote"),
       s.max_depth_m);

@@ -4,8 +4,8 @@
 // components -> the component with the largest convex-hull volume is static.
 // The caller chooses the points and frames: the front end (front_end_static_points.h) passes
 // the current frame's tracked points with their measurements in the current frame and in
-// keyframes spread over the window; a back end would pass the window's marked points with all
-// their keyframe observations (Algorithm 1).
+// keyframes spread over the window; the back end (backend/window_static_points.h) passes the
+// window's marked points with their measurements in the window's keyframes (Algorithm 1).
 
 #include <vector>
 

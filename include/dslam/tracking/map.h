@@ -1,6 +1,9 @@
 #pragma once
 // The odometry's local map: map points (marked = trusted static, unmarked = seen moving) and the
-// keyframes that created them. Single-threaded: owned and mutated by the tracking thread only.
+// keyframes that created them. Not thread-safe: Slam (backend/slam.h) owns the live map and
+// guards it with its map mutex; the tracking thread changes it in Odometry::ProcessFrame, and the
+// back end copies the window into a LocalMappingJob and applies the job's results under that
+// mutex (slam.h states the locking policy).
 
 #include <cstdint>
 #include <deque>
