@@ -5,11 +5,14 @@
 #
 # Usage: scripts/sanitize.sh KIND
 #   thread   ThreadSanitizer, workspace build/tsan: test_slam_threads (the back-end thread against
-#            the synchronous mode, Reset and destruction with work queued, keyframe observers),
-#            test_static_map_slam (the static map fused on the back-end thread while another
-#            thread reads it), then `dslam_run_dataset --threads --backend on --map --map-unmasked
-#            --objects` (the objects' mask and optical flow side by side on OpenCV's pool) on
+#            the synchronous mode, Reset and destruction with work queued, keyframe observers, a
+#            dynamic scene whose map changes while a run is in flight), test_static_map_slam (the
+#            static map fused on the back-end thread while another thread reads it), then
+#            `dslam_run_dataset --threads --backend on --map --map-unmasked --objects` (the
+#            objects' mask and optical flow side by side on OpenCV's pool) on
 #            $DSLAM_SANITIZE_FRAMES (80) frames of the synthetic `walking` scenario, seed 1.
+#            DSLAM_SANITIZE_SCOPE=ci (scripts/test.sh, so CI): the two gtests only, and only
+#            their targets built (incremental through the compiler cache).
 #   address  AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (undefined behaviour
 #            aborts like a memory error), workspace build/asan: every gtest binary of dslam (each
 #            `dslam_test(...)` in test/*/CMakeLists.txt: the ROS-free parts and the ros part;
@@ -24,12 +27,15 @@
 # repository) fails the run, any other report is listed. A run also fails when its program
 # exits non-zero (a failing test) or, for gtest binaries, stops before gtest's final summary.
 # Environment: DSLAM_JOBS (2), DSLAM_SANITIZE_FRAMES (80), DSLAM_SANITIZE_TESTS (address: the
-# gtest binaries to build and run, default all).
+# gtest binaries to build and run, default all), DSLAM_SANITIZE_SCOPE (full, or ci: above).
+# Besides the gtests' own XML files, $REPORTS/sanitizer_verdict.xml holds one JUnit test case,
+# failed when a report lies in dslam code or a run failed (scripts/test.sh counts both).
 set -euo pipefail
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 KIND="${1:-}"
 FRAMES="${DSLAM_SANITIZE_FRAMES:-80}"
+SCOPE="${DSLAM_SANITIZE_SCOPE:-full}"
 START_S=$SECONDS
 
 # Per kind: the workspace name and the start of a report's first line.
@@ -54,8 +60,11 @@ all_gtests() {
   sed -n 's/^dslam_test(\([A-Za-z0-9_]*\).*/\1/p' "$REPO"/test/*/CMakeLists.txt | sort
 }
 
+THREAD_GTESTS=(test_slam_threads test_static_map_slam)
 case "$KIND" in
-  thread) TARGETS=(dslam_run_dataset_main dslam_synth_main test_slam_threads test_static_map_slam) ;;
+  thread)
+    TARGETS=("${THREAD_GTESTS[@]}")
+    [[ "$SCOPE" == ci ]] || TARGETS+=(dslam_run_dataset_main dslam_synth_main) ;;
   address)
     read -r -a GTESTS <<< "${DSLAM_SANITIZE_TESTS:-$(all_gtests | tr '\n' ' ')}"
     TARGETS=("${GTESTS[@]}") ;;
@@ -126,15 +135,16 @@ run_gtest() {
 
 case "$KIND" in
   thread)
-    run_sanitized test_slam_threads "$BIN/test_slam_threads"
-    run_sanitized test_static_map_slam "$BIN/test_static_map_slam"
-    SEQUENCE="$WS/sequences/walking_f${FRAMES}_s1"
-    [[ -f "$SEQUENCE/groundtruth.txt" ]] || run_sanitized synth "$BIN/dslam_synth" \
-      --scenario walking --frames "$FRAMES" --seed 1 --output "$SEQUENCE"
-    run_sanitized run_dataset "$BIN/dslam_run_dataset" --dataset "$SEQUENCE" \
-      --trajectory "$REPORTS/trajectory.txt" --summary "$REPORTS/summary.json" --threads \
-      --backend on --map "$REPORTS/map.pcd" --map-unmasked "$REPORTS/map_unmasked.pcd" \
-      --objects "$REPORTS/objects.txt" --quiet ;;
+    for test in "${THREAD_GTESTS[@]}"; do run_gtest "$test"; done
+    if [[ "$SCOPE" != ci ]]; then
+      SEQUENCE="$WS/sequences/walking_f${FRAMES}_s1"
+      [[ -f "$SEQUENCE/groundtruth.txt" ]] || run_sanitized synth "$BIN/dslam_synth" \
+        --scenario walking --frames "$FRAMES" --seed 1 --output "$SEQUENCE"
+      run_sanitized run_dataset "$BIN/dslam_run_dataset" --dataset "$SEQUENCE" \
+        --trajectory "$REPORTS/trajectory.txt" --summary "$REPORTS/summary.json" --threads \
+        --backend on --map "$REPORTS/map.pcd" --map-unmasked "$REPORTS/map_unmasked.pcd" \
+        --objects "$REPORTS/objects.txt" --quiet
+    fi ;;
   address)
     export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
     for test in "${GTESTS[@]}"; do run_gtest "$test"; done ;;
@@ -147,5 +157,16 @@ if ((failed_runs > 0)); then
   status=1
 fi
 echo "[sanitize] wall time: build ${BUILD_S} s, total $((SECONDS - START_S)) s"
+python3 - "$REPORTS/sanitizer_verdict.xml" "$KIND" "$status" <<'PY'
+import sys
+from xml.sax.saxutils import quoteattr
+path, kind, status = sys.argv[1], sys.argv[2], int(sys.argv[3])
+failure = "" if status == 0 else (
+    '<failure message="a report in dslam code or a failed run (see the [sanitize] lines)"/>')
+with open(path, "w") as f:
+    f.write('<?xml version="1.0"?>\n<testsuite name="sanitize" tests="1" failures="%d">'
+            '<testcase classname="sanitize" name=%s>%s</testcase></testsuite>\n'
+            % (status != 0, quoteattr(kind + "_no_report_in_dslam_code"), failure))
+PY
 [[ $status -eq 0 ]] && echo "[sanitize] $KIND: OK" || echo "[sanitize] $KIND: FAILED"
 exit $status

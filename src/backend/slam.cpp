@@ -151,6 +151,8 @@ void Slam::BackEndLoop() {
         lock.unlock();  // tracking goes on while the job works on its copy
         job.Run(config());
         lock.lock();
+        work_.wait(lock, [this] { return stop_ || !results_held_; });  // HoldBackEndResults
+        if (stop_) return;  // the destructor: the results are dropped
         if (job.generation() == generation_) completed_.push_back(FinishLocalMapping(job));
       }
       if (!observers_.empty()) {  // the new keyframes and the window as local mapping left it
@@ -211,8 +213,8 @@ void Slam::DropBackEndWork() {
 
 void Slam::WaitForBackEnd() {
   Lock lock(map_mutex_);
-  if (held_) {
-    held_ = false;
+  if (held_ || results_held_) {
+    held_ = results_held_ = false;
     work_.notify_all();
   }
   idle_.wait(lock, [this] { return !HasBackEndWork() && !running_; });
@@ -230,6 +232,14 @@ void Slam::HoldBackEnd(bool hold) {
   {
     const Lock lock(map_mutex_);
     held_ = hold && mode_ == BackEndMode::kThreaded;
+  }
+  work_.notify_all();
+}
+
+void Slam::HoldBackEndResults(bool hold) {
+  {
+    const Lock lock(map_mutex_);
+    results_held_ = hold && mode_ == BackEndMode::kThreaded;
   }
   work_.notify_all();
 }

@@ -103,8 +103,8 @@ class Slam {
   void Reset(ResetMode mode);
 
   /// Threaded: blocks until no keyframe is queued, no run is in progress and the observers have
-  /// every event (releases a hold first). Synchronous: returns at once. Rethrows an exception of
-  /// the back-end thread.
+  /// every event (releases both holds first). Synchronous: returns at once. Rethrows an exception
+  /// of the back-end thread.
   void WaitForBackEnd();
 
   /// The completed runs no FrameResult has reported, oldest first; they count as reported (the
@@ -116,6 +116,13 @@ class Slam {
   /// sequence with the map unchanged by the back end, and tests see the queue. No effect when
   /// synchronous.
   void HoldBackEnd(bool hold);
+
+  /// Threaded: while held, a run that has copied its window works on its copy, then waits
+  /// (without the lock) before applying its results, so that the map changes only by tracking
+  /// while the run is in flight, for as many frames as the caller feeds (tests of the locking
+  /// policy; a long run live). New keyframes queue meanwhile. Releasing lets the run apply. No
+  /// effect when synchronous.
+  void HoldBackEndResults(bool hold);
 
   /// Every tracked frame re-expressed on its reference keyframe as refined by the back end so
   /// far (RefinedTrajectory, a copy); the same poses as the causal ones with the back end off.
@@ -174,6 +181,7 @@ class Slam {
   bool running_ = false;                 ///< the back-end thread works on a job (without the lock)
   uint64_t generation_ = 0;              ///< incremented by each reset: older jobs are dropped
   bool held_ = false;                    ///< HoldBackEnd(true)
+  bool results_held_ = false;            ///< HoldBackEndResults(true)
   bool stop_ = false;                    ///< the destructor asked the thread to end
   std::deque<BackEndStatus> completed_;  ///< runs not yet reported, oldest first
   Delivery events_;                      ///< for the observers, not yet taken
