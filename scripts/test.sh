@@ -10,6 +10,11 @@ source "$(dirname "${BASH_SOURCE[0]}")/workspace.sh"
 export ROSCONSOLE_STDOUT_LINE_BUFFERED=1 PYTHONUNBUFFERED=1
 RESULTS="$WS/build/test_results"
 rm -rf "$RESULTS"
+# Synthetic scenes shared by the test binaries and rostests of this run, each rendered once
+# (test/support/rendered_sequence.h, test/rostest/test_scenes.py); new for every run.
+export DSLAM_TEST_SCENES="$WS/build/test_scenes"
+rm -rf "$DSLAM_TEST_SCENES"
+mkdir -p "$DSLAM_TEST_SCENES"
 set +u; source "$WS/devel/setup.bash"; set -u
 echo "[test] building and running tests (log: $WS/test.log)"
 if ! dslam_catkin_make run_tests > "$WS/test.log" 2>&1; then

@@ -5,9 +5,7 @@ in the odom frame with the images' stamps, walkers found in most frames, plausib
 speeds, ids that persist across frames, and a box, an arrow and a label per reported object."""
 
 import collections
-import os
 import subprocess
-import tempfile
 import threading
 import unittest
 
@@ -17,17 +15,15 @@ from visualization_msgs.msg import Marker, MarkerArray
 
 from dslam.msg import MovingObjects
 
+import test_scenes  # beside this file
+
 FRAMES = 90
 
 
 class MovingObjectsTest(unittest.TestCase):
     def test_objects_and_markers(self):
         rospy.init_node("moving_objects_check")
-        work = tempfile.mkdtemp(prefix="dslam_rostest_")
-        folder, bag = os.path.join(work, "walking"), os.path.join(work, "walking.bag")
-        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "walking",
-                               "--frames", str(FRAMES), "--seed", "1", "--output", folder,
-                               "--bag", bag], stdout=subprocess.DEVNULL)
+        folder, bag = test_scenes.scene("walking", FRAMES, with_bag=True)
         lock = threading.Lock()
         objects, markers = [], []
 

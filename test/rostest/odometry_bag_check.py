@@ -28,6 +28,7 @@ from dslam.srv import SaveMap, SaveTrajectory
 
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import trajectory as traj  # noqa: E402
+import test_scenes  # noqa: E402 (beside this file)
 
 FRAMES = 60
 ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
@@ -55,10 +56,7 @@ class OdometryBagTest(unittest.TestCase):
     def test_outputs_and_trajectory(self):
         rospy.init_node("odometry_bag_check")
         work = tempfile.mkdtemp(prefix="dslam_rostest_")
-        folder, bag = os.path.join(work, "static_room"), os.path.join(work, "static_room.bag")
-        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "static_room",
-                               "--frames", str(FRAMES), "--seed", "1", "--output", folder,
-                               "--bag", bag], stdout=subprocess.DEVNULL)
+        folder, bag = test_scenes.scene("static_room", FRAMES, with_bag=True)
         rec = Recorder()
         topics = [("odom", Odometry), ("static_points", PointCloud2),
                   ("dynamic_points", PointCloud2), ("graph_edges", MarkerArray),

@@ -5,10 +5,7 @@ topic, stamps of colour, depth and camera_info equal per frame and strictly incr
 (across loops), arrival spread close to 59/30 s, the encodings, the intrinsics of camera.yaml,
 frame k + 10 carrying the pixels of frame k (looping), and the replay's own count."""
 
-import os
-import re
 import subprocess
-import tempfile
 import threading
 import time
 import unittest
@@ -16,6 +13,8 @@ import unittest
 import rospy
 import rostest
 from sensor_msgs.msg import CameraInfo, Image
+
+import test_scenes  # beside this file
 
 FRAMES = 10
 RATE_HZ = 30.0
@@ -38,11 +37,7 @@ class Recorder:
 class ReplayTest(unittest.TestCase):
     def test_replay(self):
         rospy.init_node("replay_check")
-        work = tempfile.mkdtemp(prefix="dslam_replay_")
-        folder = os.path.join(work, "static_room")
-        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "static_room",
-                               "--frames", str(FRAMES), "--seed", "1", "--output", folder],
-                              stdout=subprocess.DEVNULL)
+        folder, _ = test_scenes.scene("static_room", FRAMES)
         rec = Recorder()
         subs = [rospy.Subscriber("/camera/rgb/image", Image, rec.callback("rgb"), queue_size=100),
                 rospy.Subscriber("/camera/depth/image", Image, rec.callback("depth"),

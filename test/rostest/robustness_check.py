@@ -29,6 +29,7 @@ from dslam.srv import SaveTrajectory
 
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import dataset, tum_bag  # noqa: E402
+import test_scenes  # noqa: E402 (beside this file)
 from dslam_tools import trajectory as traj  # noqa: E402
 
 FRAMES = 60
@@ -121,10 +122,7 @@ class RobustnessTest(unittest.TestCase):
     def test_cases_in_order(self):
         rospy.init_node("robustness_check")
         work = tempfile.mkdtemp(prefix="dslam_robustness_")
-        folder = os.path.join(work, "static_room")
-        subprocess.check_call(["rosrun", "dslam", "dslam_synth", "--scenario", "static_room",
-                               "--frames", str(FRAMES), "--seed", "1", "--output", folder],
-                              stdout=subprocess.DEVNULL)
+        folder, _ = test_scenes.scene("static_room", FRAMES, with_bag=True)  # as odometry_bag's
         seq, node = Sequence(folder), Node()
         rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
         node.wait_connected()

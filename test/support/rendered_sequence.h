@@ -2,12 +2,14 @@
 // A synthetic scenario rendered in-process (seed 1) for whole-trajectory regression tests: the
 // frames, their dynamic masks and the ground-truth trajectory.
 
+#include <cstdlib>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "dslam/core/trajectory.h"
 #include "dslam/synth/sequence.h"
+#include "support/scene_cache.h"
 
 namespace dslam {
 namespace test {
@@ -18,15 +20,43 @@ struct RenderedSequence {
   Trajectory groundtruth;      ///< T_world_camera per frame
 };
 
-/// Renders the first `frames` frames of scenario `name` (synth::MakeScenario, seed 1).
-inline RenderedSequence RenderSequence(const std::string& name, int frames) {
-  const synth::SyntheticSequence sequence(synth::MakeScenario(name, 1));
-  RenderedSequence out;
+/// The images of frames 0..frames-1 of `sequence`: rendered, or read from
+/// $DSLAM_TEST_SCENES/<name>_s1.bin when the environment names that folder (scripts/test.sh sets
+/// a new one per run) and the file holds enough frames; a file with fewer is replaced by one with
+/// `frames` (written to a file of its own, then renamed: binaries running at the same time read
+/// whole files). The images are the same bit for bit either way.
+inline std::vector<CachedImages> SceneImages(const synth::SyntheticSequence& sequence,
+                                             const std::string& name, int frames) {
+  const char* folder = std::getenv("DSLAM_TEST_SCENES");
+  const std::string path = folder && *folder ? std::string(folder) + "/" + name + "_s1.bin" : "";
+  std::vector<CachedImages> images;
+  if (!path.empty()) images = ReadSceneCache(path, frames);
+  if (static_cast<int>(images.size()) == frames) return images;
+  images.clear();
   for (int i = 0; i < frames; ++i) {
     synth::SyntheticFrame frame = sequence.RenderFrame(i);
-    out.groundtruth.push_back({frame.frame.stamp_s, frame.T_world_camera});
-    out.frames.push_back(std::move(frame.frame));
-    out.masks.push_back(std::move(frame.mask));
+    images.push_back({frame.frame.colour, frame.frame.depth_m, frame.mask});
+  }
+  // Another binary may have written more frames meanwhile: keep the longer file.
+  if (!path.empty() && CachedFrameCount(path) < frames) WriteSceneCache(path, images);
+  return images;
+}
+
+/// Renders the first `frames` frames of scenario `name` (synth::MakeScenario, seed 1); stamps,
+/// poses and the camera are the sequence's (SyntheticSequence::RenderFrame sets the same).
+inline RenderedSequence RenderSequence(const std::string& name, int frames) {
+  const synth::SyntheticSequence sequence(synth::MakeScenario(name, 1));
+  std::vector<CachedImages> images = SceneImages(sequence, name, frames);
+  RenderedSequence out;
+  for (int i = 0; i < frames; ++i) {
+    RgbdFrame frame;
+    frame.stamp_s = sequence.StampOf(i);
+    frame.colour = std::move(images[i].colour);
+    frame.depth_m = std::move(images[i].depth_m);
+    frame.camera = sequence.camera();
+    out.groundtruth.push_back({frame.stamp_s, sequence.PoseOf(i)});
+    out.frames.push_back(std::move(frame));
+    out.masks.push_back(std::move(images[i].mask));
   }
   return out;
 }
