@@ -68,15 +68,6 @@ CorrelationInput CollectProblem(const Map& map, const std::vector<int>& keyframe
   return input;
 }
 
-// A point the window found moving: it stops driving motion estimation. The front end marks it
-// again only after tracking.remark_frames consecutive frames in which it looks static.
-void Unmark(int remark_frames, MapPoint* point) {
-  point->marked = false;
-  point->candidate = false;
-  point->static_streak = 0;
-  point->dynamic_frames = std::max(point->dynamic_frames + 1, remark_frames);
-}
-
 bool LosesMark(PointLabel label, bool unmark_isolated) {
   return label == PointLabel::kDynamic || (unmark_isolated && label == PointLabel::kIsolated);
 }
@@ -99,7 +90,9 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
   if (result.static_component >= 0) {
     for (size_t i = 0; i < ids.size(); ++i) {
       if (!LosesMark(result.labels[i], config.backend.spd_unmark_isolated)) continue;
-      Unmark(config.tracking.remark_frames, map->Find(ids[i]));
+      // It stops driving motion estimation; the front end marks it again only after
+      // tracking.remark_frames consecutive frames in which it looks static.
+      map->Find(ids[i])->Unmark(config.tracking.remark_frames);
       ++stats.unmarked;
     }
   }

@@ -160,22 +160,13 @@ std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
       case PointLabel::kStatic:
         point->isolated_frames = 0;
         // Consistent with the static world again (e.g. wrongly unmarked, or stopped moving).
-        // The longer a point was seen moving, the longer it must look static again (up to
-        // remark_frames): a static point unmarked by one bad frame comes back at once.
-        if (!point->marked &&
-            ++point->static_streak >= std::min(rules.remark_frames, point->dynamic_frames)) {
-          point->marked = true;
-          point->dynamic_frames = 0;
-        }
+        point->LookedStatic(rules.remark_frames);
         if (point->marked && frame_index - point->created_frame >= rules.verify_frames) {
           point->candidate = false;
         }
         break;
       case PointLabel::kDynamic:
-        point->marked = false;
-        point->static_streak = 0;
-        ++point->dynamic_frames;
-        point->candidate = false;
+        point->Unmark(0);
         excluded[m] = true;
         break;
       case PointLabel::kIsolated:

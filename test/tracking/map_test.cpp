@@ -119,5 +119,37 @@ TEST(RefineDescriptor, OneObservationKeepsTheCreatingDescriptor) {
   EXPECT_EQ(cv::norm(point.descriptor, Descriptor(7), cv::NORM_HAMMING), 0.0);
 }
 
+// The label transitions both static point determinations use (front end: Unmark(0) per dynamic
+// frame, LookedStatic per static frame; back end: Unmark(remark_frames)).
+TEST(MapPointLabels, UnmarkCountsTheEvidenceAndLookedStaticMarksAgain) {
+  constexpr int kRemarkFrames = 5;
+  MapPoint point;
+  point.candidate = true;
+  point.static_streak = 3;
+  point.Unmark(0);  // the front end: one dynamic frame
+  EXPECT_FALSE(point.marked);
+  EXPECT_FALSE(point.candidate);
+  EXPECT_EQ(point.static_streak, 0);
+  EXPECT_EQ(point.dynamic_frames, 1);
+  point.LookedStatic(kRemarkFrames);  // one bad frame: back after one static frame
+  EXPECT_TRUE(point.marked);
+  EXPECT_EQ(point.dynamic_frames, 0);
+
+  point.Unmark(kRemarkFrames);  // the window: at least remark_frames of evidence at once
+  EXPECT_EQ(point.dynamic_frames, kRemarkFrames);
+  point.Unmark(0);
+  point.Unmark(0);
+  EXPECT_EQ(point.dynamic_frames, kRemarkFrames + 2);
+  for (int frame = 1; frame < kRemarkFrames; ++frame) {
+    point.LookedStatic(kRemarkFrames);
+    EXPECT_FALSE(point.marked) << "static frame " << frame;
+  }
+  point.LookedStatic(kRemarkFrames);  // min(remark_frames, dynamic_frames) static frames
+  EXPECT_TRUE(point.marked);
+  point.LookedStatic(kRemarkFrames);  // a marked point stays as it is
+  EXPECT_TRUE(point.marked);
+  EXPECT_EQ(point.static_streak, kRemarkFrames);
+}
+
 }  // namespace
 }  // namespace dslam

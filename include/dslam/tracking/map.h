@@ -5,6 +5,7 @@
 // back end copies the window into a LocalMappingJob and applies the job's results under that
 // mutex (slam.h states the locking policy).
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <unordered_map>
@@ -50,6 +51,27 @@ struct MapPoint {
   bool IsVerifiedStatic() const { return marked && !candidate; }
   /// Marked but not yet verified (new point): used for the pose only when verified ones are few.
   bool IsCandidate() const { return marked && candidate; }
+
+  /// Found moving (the front end's dynamic label, or the window's static point determination,
+  /// paper Algorithm 1): the point loses its mark and its candidacy, its static streak restarts,
+  /// and `dynamic_frames` counts one more frame of evidence, at least `min_dynamic_frames` (the
+  /// front end passes 0; the back end tracking.remark_frames, since its evidence spans a window).
+  void Unmark(int min_dynamic_frames) {
+    marked = false;
+    candidate = false;
+    static_streak = 0;
+    dynamic_frames = std::max(dynamic_frames + 1, min_dynamic_frames);
+  }
+
+  /// Labelled static in one more frame (front end): an unmarked point is marked again once its
+  /// static streak reaches min(`remark_frames`, `dynamic_frames`), so that a point unmarked by
+  /// one bad frame comes back at once and one seen moving long needs up to remark_frames.
+  void LookedStatic(int remark_frames) {
+    if (!marked && ++static_streak >= std::min(remark_frames, dynamic_frames)) {
+      marked = true;
+      dynamic_frames = 0;
+    }
+  }
 };
 
 /// Adds the 1x32 descriptor `observed` (an observation of `point` at a keyframe) to
