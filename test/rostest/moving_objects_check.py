@@ -5,8 +5,6 @@ in the odom frame with the images' stamps, walkers found in most frames, plausib
 speeds, ids that persist across frames, and a box, an arrow and a label per reported object."""
 
 import collections
-import subprocess
-import threading
 import unittest
 
 import rospy
@@ -16,6 +14,7 @@ from visualization_msgs.msg import Marker, MarkerArray
 from dslam.msg import MovingObjects
 
 import test_scenes  # beside this file
+from rostest_helpers import Recorder, play_bag  # beside this file
 
 FRAMES = 90
 
@@ -24,28 +23,12 @@ class MovingObjectsTest(unittest.TestCase):
     def test_objects_and_markers(self):
         rospy.init_node("moving_objects_check")
         folder, bag = test_scenes.scene("walking", FRAMES, with_bag=True)
-        lock = threading.Lock()
-        objects, markers = [], []
-
-        def on_objects(msg):
-            with lock:
-                objects.append(msg)
-
-        def on_markers(msg):
-            with lock:
-                markers.append(msg)
-
-        rospy.Subscriber("/dslam/moving_objects", MovingObjects, on_objects, queue_size=200)
-        rospy.Subscriber("/dslam/moving_object_markers", MarkerArray, on_markers, queue_size=200)
-        rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
-        subprocess.check_call(["rosbag", "play", "--quiet", "-r", "0.5",
-                               "--wait-for-subscribers", bag, "--topics",
-                               "/camera/rgb/image_color", "/camera/depth/image",
-                               "/camera/rgb/camera_info"])
-        rospy.sleep(2.0)
-        with lock:
-            self.check_objects(objects)
-            self.check_markers(markers)
+        rec = Recorder()
+        rec.subscribe("/dslam/moving_objects", MovingObjects, "objects", queue_size=200)
+        rec.subscribe("/dslam/moving_object_markers", MarkerArray, "markers", queue_size=200)
+        play_bag(bag)
+        self.check_objects(rec.messages("objects"))
+        self.check_markers(rec.messages("markers"))
 
     def check_objects(self, messages):
         self.assertGreater(len(messages), FRAMES // 2)

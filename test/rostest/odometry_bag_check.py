@@ -8,10 +8,8 @@ parameter ~expect_backend (odometry_bag_backend.test: the back end on, on its ow
 status messages must also report back-end runs delivered by later frames."""
 
 import os
-import subprocess
 import sys
 import tempfile
-import threading
 import time
 import unittest
 
@@ -29,27 +27,11 @@ from dslam.srv import SaveMap, SaveTrajectory
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import trajectory as traj  # noqa: E402
 import test_scenes  # noqa: E402 (beside this file)
+from rostest_helpers import Recorder, play_bag  # noqa: E402 (beside this file)
 
 FRAMES = 60
 ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
 MIN_MAP_POINTS = 10000  # static_room, 60 frames: 24957 points measured (5 cm voxels)
-
-
-class Recorder:
-    def __init__(self):
-        self.lock = threading.Lock()
-        self.counts = {}
-        self.last = {}
-        self.statuses = []
-
-    def callback(self, name):
-        def store(msg):
-            with self.lock:
-                self.counts[name] = self.counts.get(name, 0) + 1
-                self.last[name] = msg
-                if name == "status":
-                    self.statuses.append(msg)
-        return store
 
 
 class OdometryBagTest(unittest.TestCase):
@@ -61,22 +43,16 @@ class OdometryBagTest(unittest.TestCase):
         topics = [("odom", Odometry), ("static_points", PointCloud2),
                   ("dynamic_points", PointCloud2), ("graph_edges", MarkerArray),
                   ("status", FrameStatus), ("static_map", PointCloud2)]
-        subs = [rospy.Subscriber("/dslam/" + t, c, rec.callback(t), queue_size=100)
-                for t, c in topics]
-        subs.append(rospy.Subscriber("/tf", TFMessage, rec.callback("tf"), queue_size=100))
-        rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
-        subprocess.check_call(["rosbag", "play", "--quiet", "-r", "0.5",
-                               "--wait-for-subscribers", bag, "--topics",
-                               "/camera/rgb/image_color", "/camera/depth/image",
-                               "/camera/rgb/camera_info"])
-        rospy.sleep(2.0)
+        subs = [rec.subscribe("/dslam/" + t, c, t) for t, c in topics]
+        subs.append(rec.subscribe("/tf", TFMessage, "tf"))
+        play_bag(bag)
         for name in ["odom", "static_points", "dynamic_points", "graph_edges", "status", "tf",
                      "static_map"]:
-            self.assertGreater(rec.counts.get(name, 0), 0, "nothing received on " + name)
-        status = rec.last["status"]
+            self.assertGreater(rec.count(name), 0, "nothing received on " + name)
+        status = rec.last("status")
         self.assertEqual(status.frames_received, FRAMES)
         self.assertEqual(status.frames_processed + status.frames_dropped, FRAMES)
-        odom = rec.last["odom"]
+        odom = rec.last("odom")
         self.assertEqual(odom.header.frame_id, "odom")
         self.assertEqual(odom.child_frame_id, "base_link")
         self.assertGreater(odom.pose.covariance[0], 0.0)
@@ -87,9 +63,10 @@ class OdometryBagTest(unittest.TestCase):
         ate_m = traj.evaluate(os.path.join(folder, "groundtruth.txt"), out)["metrics"]["ate_rmse_m"]
         rospy.loginfo("odometry_bag_check: %d poses, ATE %.4f m", result.poses, ate_m)
         self.assertLess(ate_m, ATE_TOLERANCE_M)
-        self.assertTrue(all(s.tracking_ms > 0.0 for s in rec.statuses))
+        statuses = rec.messages("status")
+        self.assertTrue(all(s.tracking_ms > 0.0 for s in statuses))
         if rospy.get_param("~expect_backend", False):
-            self.check_backend(rec.statuses)
+            self.check_backend(statuses)
         self.check_static_map(rec, work)
 
     def check_static_map(self, rec, work):
@@ -102,8 +79,7 @@ class OdometryBagTest(unittest.TestCase):
         while True:
             result = save(path)
             self.assertTrue(result.success, result.message)
-            with rec.lock:
-                cloud = rec.last["static_map"]
+            cloud = rec.last("static_map")
             points = cloud.width * cloud.height
             if result.points == points or time.time() > deadline:
                 break

@@ -4,7 +4,6 @@ camera/depth_registered/image_raw (16UC1 millimetres) and camera/rgb/camera_info
 openni2.launch subscribes to by default); checks that openni2.launch's remapping delivers them to
 dslam (status and odometry arrive, frames tracked)."""
 
-import threading
 import unittest
 
 import numpy as np
@@ -14,6 +13,8 @@ from nav_msgs.msg import Odometry
 from sensor_msgs.msg import CameraInfo, Image
 
 from dslam.msg import FrameStatus
+
+from rostest_helpers import Recorder  # beside this file
 
 WIDTH, HEIGHT, FX = 640, 480, 525.0
 
@@ -52,17 +53,9 @@ def camera_info(stamp):
 class OpenNI2RemapTest(unittest.TestCase):
     def test_standin_topics_reach_dslam(self):
         rospy.init_node("openni2_standin_check")
-        received = {"status": [], "odom": []}
-        lock = threading.Lock()
-
-        def keep(name):
-            def store(msg):
-                with lock:
-                    received[name].append(msg)
-            return store
-
-        rospy.Subscriber("/dslam/status", FrameStatus, keep("status"))
-        rospy.Subscriber("/dslam/odom", Odometry, keep("odom"))
+        rec = Recorder()
+        rec.subscribe("/dslam/status", FrameStatus, "status", queue_size=None)
+        rec.subscribe("/dslam/odom", Odometry, "odom", queue_size=None)
         pubs = [rospy.Publisher("/camera/rgb/image_raw", Image, queue_size=5),
                 rospy.Publisher("/camera/depth_registered/image_raw", Image, queue_size=5),
                 rospy.Publisher("/camera/rgb/camera_info", CameraInfo, queue_size=5)]
@@ -74,14 +67,12 @@ class OpenNI2RemapTest(unittest.TestCase):
             for pub, msg in zip(pubs, [image(colour, "rgb8", stamp), image(depth, "16UC1", stamp),
                                        camera_info(stamp)]):
                 pub.publish(msg)
-            with lock:
-                if len(received["odom"]) >= 5:
-                    break
+            if rec.count("odom") >= 5:
+                break
             rate.sleep()
-        with lock:
-            self.assertGreaterEqual(len(received["odom"]), 5, "no odometry from the stand-in")
-            status = received["status"][-1]
-            odom = received["odom"][-1]
+        self.assertGreaterEqual(rec.count("odom"), 5, "no odometry from the stand-in")
+        status = rec.last("status")
+        odom = rec.last("odom")
         self.assertEqual(status.frames_rejected, 0)
         self.assertIn(status.state, ["initialised", "tracking", "recovered"])
         self.assertEqual(odom.child_frame_id, "camera_link")

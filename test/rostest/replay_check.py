@@ -6,8 +6,6 @@ topic, stamps of colour, depth and camera_info equal per frame and strictly incr
 frame k + 10 carrying the pixels of frame k (looping), and the replay's own count."""
 
 import subprocess
-import threading
-import time
 import unittest
 
 import rospy
@@ -15,6 +13,7 @@ import rostest
 from sensor_msgs.msg import CameraInfo, Image
 
 import test_scenes  # beside this file
+from rostest_helpers import Recorder  # beside this file
 
 FRAMES = 10
 RATE_HZ = 30.0
@@ -22,28 +21,14 @@ DURATION_S = 2.0
 EXPECTED = int(RATE_HZ * DURATION_S)
 
 
-class Recorder:
-    def __init__(self):
-        self.lock = threading.Lock()
-        self.messages = {"rgb": [], "depth": [], "info": []}
-
-    def callback(self, name):
-        def store(msg):
-            with self.lock:
-                self.messages[name].append((time.monotonic(), msg))
-        return store
-
-
 class ReplayTest(unittest.TestCase):
     def test_replay(self):
         rospy.init_node("replay_check")
         folder, _ = test_scenes.scene("static_room", FRAMES)
         rec = Recorder()
-        subs = [rospy.Subscriber("/camera/rgb/image", Image, rec.callback("rgb"), queue_size=100),
-                rospy.Subscriber("/camera/depth/image", Image, rec.callback("depth"),
-                                 queue_size=100),
-                rospy.Subscriber("/camera/rgb/camera_info", CameraInfo, rec.callback("info"),
-                                 queue_size=100)]
+        subs = [rec.subscribe("/camera/rgb/image", Image, "rgb"),
+                rec.subscribe("/camera/depth/image", Image, "depth"),
+                rec.subscribe("/camera/rgb/camera_info", CameraInfo, "info")]
         out = subprocess.run(["rosrun", "dslam", "dslam_replay", "--dataset", folder, "--rate",
                               str(RATE_HZ), "--duration", str(DURATION_S), "--depth", "16UC1",
                               "__ns:=/camera"], check=True, stdout=subprocess.PIPE, text=True,
@@ -52,8 +37,7 @@ class ReplayTest(unittest.TestCase):
         for sub in subs:
             sub.unregister()
         self.assertRegex(out, r"published %d frames" % EXPECTED)
-        with rec.lock:
-            msgs = {name: list(m) for name, m in rec.messages.items()}
+        msgs = {name: rec.timed(name) for name in ["rgb", "depth", "info"]}
         for name, received in msgs.items():
             self.assertEqual(len(received), EXPECTED, name)
         rgb = [m for _, m in msgs["rgb"]]

@@ -10,7 +10,6 @@ import os
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 import unittest
 
@@ -30,6 +29,7 @@ from dslam.srv import SaveTrajectory
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import dataset, tum_bag  # noqa: E402
 import test_scenes  # noqa: E402 (beside this file)
+from rostest_helpers import Recorder  # noqa: E402 (beside this file)
 from dslam_tools import trajectory as traj  # noqa: E402
 
 FRAMES = 60
@@ -61,29 +61,20 @@ class Sequence:
 
 
 class Node:
-    """Publishers into the nodelet and recorders of its outputs."""
+    """Publishers into the nodelet and a recorder of its outputs."""
 
     def __init__(self):
-        self.lock = threading.Lock()
-        self.statuses, self.logs, self.path_lengths = [], [], []
+        self.rec = Recorder()
         self.pubs = [rospy.Publisher("/camera/rgb/image_color", Image, queue_size=5),
                      rospy.Publisher("/camera/depth/image", Image, queue_size=5),
                      rospy.Publisher("/camera/rgb/camera_info", CameraInfo, queue_size=5)]
-        self.subs = [rospy.Subscriber("/dslam/status", FrameStatus, self._status, queue_size=100),
-                     rospy.Subscriber("/rosout", Log, self._log, queue_size=1000),
-                     rospy.Subscriber("/dslam/path", Path, self._path, queue_size=100)]
+        self.subs = [self.rec.subscribe("/dslam/status", FrameStatus, "status"),
+                     self.rec.subscribe("/rosout", Log, "log", queue_size=1000),
+                     self.rec.subscribe("/dslam/path", Path, "path")]
 
-    def _status(self, msg):
-        with self.lock:
-            self.statuses.append(msg)
-
-    def _log(self, msg):
-        with self.lock:
-            self.logs.append(msg.msg)
-
-    def _path(self, msg):
-        with self.lock:
-            self.path_lengths.append(len(msg.poses))
+    def path_lengths(self):
+        """The number of poses of each path message so far."""
+        return [len(msg.poses) for msg in self.rec.messages("path")]
 
     def wait_connected(self):
         deadline = time.time() + 30.0
@@ -92,8 +83,7 @@ class Node:
 
     def send(self, messages, expect_status=True):
         """Publishes one set; returns its status message (waits up to 20 s)."""
-        with self.lock:
-            count = len(self.statuses)
+        count = self.rec.count("status")
         for pub, msg in zip(self.pubs, messages):
             if msg is not None:
                 pub.publish(msg)
@@ -101,15 +91,14 @@ class Node:
             return None
         deadline = time.time() + 20.0
         while time.time() < deadline:
-            with self.lock:
-                if len(self.statuses) > count:
-                    return self.statuses[count]
+            statuses = self.rec.messages("status")
+            if len(statuses) > count:
+                return statuses[count]
             time.sleep(0.01)
         raise AssertionError("no status for the set stamped %s" % messages[0].header.stamp)
 
     def logged(self, text):
-        with self.lock:
-            return any(text in line for line in self.logs)
+        return any(text in log.msg for log in self.rec.messages("log"))
 
     def wait_logged(self, text, timeout_s=5.0):
         deadline = time.time() + timeout_s
@@ -134,7 +123,8 @@ class RobustnessTest(unittest.TestCase):
         self.check_gap_and_backwards(seq, node, stamp)
         self.check_saved_segments(work, folder, node)
         self.check_missing_camera_info(seq, node)
-        self.assertTrue(node.path_lengths and max(node.path_lengths) <= 5, node.path_lengths)
+        path_lengths = node.path_lengths()
+        self.assertTrue(path_lengths and max(path_lengths) <= 5, path_lengths)
         self.check_invalid_parameter()
 
     def check_skipped_sets(self, seq, node, stamp):

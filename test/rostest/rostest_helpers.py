@@ -1,0 +1,58 @@
+"""What the rostests share beside the scenes (test_scenes.py): a recorder of the messages a test
+subscribes to, and playing a scene's bag into the dslam node."""
+import collections
+import subprocess
+import threading
+import time
+
+import rospy
+
+CAMERA_TOPICS = ["/camera/rgb/image_color", "/camera/depth/image", "/camera/rgb/camera_info"]
+
+
+class Recorder:
+    """Every message of the topics subscribed through it, by name, in arrival order, each with
+    its arrival time (time.monotonic(), s); safe to read while callbacks record."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._received = collections.defaultdict(list)  # name -> [(arrival_s, msg)]
+
+    def subscribe(self, topic, msg_class, name, queue_size=100):
+        """A rospy.Subscriber of `topic` that records its messages as `name`."""
+        return rospy.Subscriber(topic, msg_class, self.callback(name), queue_size=queue_size)
+
+    def callback(self, name):
+        """A subscriber callback that records each message as `name`."""
+        def store(msg):
+            with self._lock:
+                self._received[name].append((time.monotonic(), msg))
+        return store
+
+    def timed(self, name):
+        """[(arrival_s, msg)] of `name` so far (a copy)."""
+        with self._lock:
+            return list(self._received.get(name, []))
+
+    def messages(self, name):
+        """The messages of `name` so far (a copy)."""
+        return [msg for _, msg in self.timed(name)]
+
+    def count(self, name):
+        with self._lock:
+            return len(self._received.get(name, []))
+
+    def last(self, name):
+        """The newest message of `name` (IndexError when none arrived)."""
+        with self._lock:
+            return self._received.get(name, [])[-1][1]
+
+
+def play_bag(bag, rate=0.5, settle_s=2.0):
+    """Plays the camera topics of `bag` (test_scenes.scene(..., with_bag=True)) into the dslam
+    node: waits for the node (its save_trajectory service, up to 30 s), plays at `rate` times real
+    time once the node subscribes, then waits `settle_s` for it to process the last frames."""
+    rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
+    subprocess.check_call(["rosbag", "play", "--quiet", "-r", str(rate), "--wait-for-subscribers",
+                           bag, "--topics"] + CAMERA_TOPICS)
+    rospy.sleep(settle_s)
