@@ -23,6 +23,7 @@ constexpr int kGoodStart = 30;  // good frames before the bad ones
 constexpr int kGoodEnd = 30;    // good frames after them
 constexpr int kShortGap = 5;    // bad frames: fewer than tracking.lost_frames_before_reset (10)
 constexpr int kLongGap = 15;    // bad frames: more (without relocalisation: re-initialised)
+constexpr int kRoomFrames = kGoodStart + kLongGap + kGoodEnd;  // of static_room, rendered once
 
 /// Ground truth T_world_camera relative to the first frame's camera (the odometry's world).
 Eigen::Isometry3d Truth(const Trajectory& groundtruth, size_t i) {
@@ -75,16 +76,10 @@ RunResult RunSlam(const std::vector<RgbdFrame>& frames, const Trajectory& ground
   return run;
 }
 
-const test::RenderedSequence& StaticRoom() {
-  static const test::RenderedSequence rendered =
-      test::RenderSequence("static_room", kGoodStart + kLongGap + kGoodEnd);
-  return rendered;
-}
-
 /// Runs the static room with frames [kGoodStart, kGoodStart + gap) spoilt by `spoil`.
 RunResult RunSpoilt(const std::function<void(RgbdFrame*)>& spoil, int gap,
                     const Config& config = WithBackEnd()) {
-  const test::RenderedSequence& room = StaticRoom();
+  const test::RenderedSequence& room = test::SharedSequence("static_room", kRoomFrames);
   std::vector<RgbdFrame> frames;
   const int total = kGoodStart + gap + kGoodEnd;
   for (int i = 0; i < total; ++i) {
@@ -127,7 +122,7 @@ TEST(BadInput, InfiniteDepthIsTrackedFromTheMap) {
 }
 
 TEST(BadInput, NoValidDepthAtTheStartIsLostUntilDepthReturns) {
-  const test::RenderedSequence& room = StaticRoom();
+  const test::RenderedSequence& room = test::SharedSequence("static_room", kRoomFrames);
   Slam slam(Config{});
   for (int i = 0; i < 3; ++i) {
     RgbdFrame frame = room.frames[i];

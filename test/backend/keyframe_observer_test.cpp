@@ -15,12 +15,9 @@
 namespace dslam {
 namespace {
 
+// The sequence of every test of this file: test::SharedSequence(kScene, kFrames).
+constexpr char kScene[] = "static_room";
 constexpr int kFrames = 40;
-
-const test::RenderedSequence& Sequence() {
-  static const test::RenderedSequence rendered = test::RenderSequence("static_room", kFrames);
-  return rendered;
-}
 
 // Records what Slam hands over: "k<id>" per keyframe, "r0"/"r1" per reset (kKeepPose/kNewWorld).
 class Recorder : public KeyFrameObserver {
@@ -69,8 +66,9 @@ struct Fed {
 
 // Frames [begin, end) through `slam`, each with `request`.
 void Feed(Slam* slam, int begin, int end, const FrameRequest& request, Fed* run) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   for (int i = begin; i < end; ++i) {
-    const FrameResult r = slam->ProcessFrame(Sequence().frames[i], request);
+    const FrameResult r = slam->ProcessFrame(room.frames[i], request);
     if (r.keyframe) {
       run->keyframes.push_back("k" + std::to_string(slam->MapSnapshot().keyframes().back().id));
     }
@@ -94,13 +92,14 @@ TEST(KeyFrameObserver, ReceivesEveryKeyFrameWithSharedImagesAndLabels) {
   EXPECT_EQ(recorder->events, run.keyframes);
   EXPECT_FALSE(recorder->overlapped);
   for (const std::thread::id id : recorder->threads) EXPECT_EQ(id, std::this_thread::get_id());
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   size_t k = 0;
   for (size_t i = 0; i < run.results.size(); ++i) {
     if (!run.results[i].keyframe) continue;
     const KeyFrameRecord& record = recorder->records[k++];
     // A shallow copy: the very pixels of the frame handed in.
-    EXPECT_EQ(record.frame.depth_m.data, Sequence().frames[i].depth_m.data);
-    EXPECT_EQ(record.frame.colour.data, Sequence().frames[i].colour.data);
+    EXPECT_EQ(record.frame.depth_m.data, room.frames[i].depth_m.data);
+    EXPECT_EQ(record.frame.colour.data, room.frames[i].colour.data);
     EXPECT_TRUE(record.T_world_camera.isApprox(run.results[i].T_world_camera));
     EXPECT_EQ(record.points.size(), run.results[i].points.size());
   }

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "dslam/backend/slam.h"
-#include "dslam/eval/trajectory_metrics.h"
+#include "support/ate.h"
 #include "support/rendered_sequence.h"
 
 namespace dslam {
@@ -22,19 +22,15 @@ RunResult RunSlam(const Rendered& rendered, bool backend) {
   Config config;
   config.backend.enabled = backend;
   Slam slam(config);
-  Trajectory estimated;
   RunResult out;
-  for (const RgbdFrame& frame : rendered.frames) {
-    const FrameResult result = slam.ProcessFrame(frame);
-    if (result.has_pose) estimated.push_back({result.stamp_s, result.T_world_camera});
-    out.with_pose += result.has_pose;
-    out.backend_runs += result.backend.ran;
-    out.rejected += result.backend.ba_rejected;
-  }
-  const TrajectoryMetricsOptions options;
-  out.ate_m = EvaluateTrajectory(estimated, rendered.groundtruth, {}, options).ate_m.rmse;
-  out.refined_ate_m =
-      EvaluateTrajectory(slam.RefinedPoses(), rendered.groundtruth, {}, options).ate_m.rmse;
+  const Trajectory estimated =
+      test::TrackAll(&slam, rendered.frames, [&out](size_t, const FrameResult& result) {
+        out.with_pose += result.has_pose;
+        out.backend_runs += result.backend.ran;
+        out.rejected += result.backend.ba_rejected;
+      });
+  out.ate_m = test::AteRmse(estimated, rendered.groundtruth);
+  out.refined_ate_m = test::AteRmse(slam.RefinedPoses(), rendered.groundtruth);
   return out;
 }
 

@@ -11,19 +11,15 @@
 #include <gtest/gtest.h>
 
 #include "dslam/backend/slam.h"
-#include "dslam/eval/trajectory_metrics.h"
+#include "support/ate.h"
 #include "support/rendered_sequence.h"
 
 namespace dslam {
 namespace {
 
+// The sequence of every test of this file but the last: test::SharedSequence(kScene, kFrames).
+constexpr char kScene[] = "static_room";
 constexpr int kFrames = 45;
-
-// Rendered once for every test of this file (rendering is the slow part).
-const test::RenderedSequence& Sequence() {
-  static const test::RenderedSequence rendered = test::RenderSequence("static_room", kFrames);
-  return rendered;
-}
 
 // The back end on; one keyframe held fixed, so that local BA runs from the second keyframe on.
 Config BackEndOn() {
@@ -40,25 +36,22 @@ struct RunResult {
 
 // Feeds every frame, `gap` apart (a camera's frame interval), then collects the runs left over.
 RunResult RunSequence(BackEndMode mode, std::chrono::milliseconds gap) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Slam slam(BackEndOn(), mode);
-  Trajectory estimated;
   RunResult out;
-  for (const RgbdFrame& frame : Sequence().frames) {
-    const FrameResult r = slam.ProcessFrame(frame);
-    if (r.has_pose) estimated.push_back({r.stamp_s, r.T_world_camera});
-    out.with_pose += r.has_pose;
-    out.keyframes += r.keyframe;
-    out.runs += r.backend.ran;
-    out.delivered += r.backend_thread.delivered;
-    out.max_backlog = std::max(out.max_backlog, r.backend_thread.backlog);
-    std::this_thread::sleep_for(gap);
-  }
+  const Trajectory estimated =
+      test::TrackAll(&slam, room.frames, [&](size_t, const FrameResult& r) {
+        out.with_pose += r.has_pose;
+        out.keyframes += r.keyframe;
+        out.runs += r.backend.ran;
+        out.delivered += r.backend_thread.delivered;
+        out.max_backlog = std::max(out.max_backlog, r.backend_thread.backlog);
+        std::this_thread::sleep_for(gap);
+      });
   slam.WaitForBackEnd();
   for (const BackEndStatus& run : slam.TakeUnreportedRuns()) out.runs += run.ran;
-  const TrajectoryMetricsOptions options;
-  out.ate_m = EvaluateTrajectory(estimated, Sequence().groundtruth, {}, options).ate_m.rmse;
-  out.refined_ate_m =
-      EvaluateTrajectory(slam.RefinedPoses(), Sequence().groundtruth, {}, options).ate_m.rmse;
+  out.ate_m = test::AteRmse(estimated, room.groundtruth);
+  out.refined_ate_m = test::AteRmse(slam.RefinedPoses(), room.groundtruth);
   return out;
 }
 
@@ -87,9 +80,10 @@ TEST(SlamThreads, ThreadedTracksLikeSynchronous) {
 // Feeds frames from `*next_frame` on until `keyframes` keyframes were made; returns the last
 // result.
 FrameResult FeedKeyFrames(Slam* slam, int keyframes, int* next_frame) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   FrameResult r;
   for (int made = 0; made < keyframes && *next_frame < kFrames; ++*next_frame) {
-    r = slam->ProcessFrame(Sequence().frames[*next_frame]);
+    r = slam->ProcessFrame(room.frames[*next_frame]);
     made += r.keyframe;
   }
   return r;
@@ -112,7 +106,7 @@ TEST(SlamThreads, HeldBackEndQueuesKeyFramesAndCoalescesThem) {
   EXPECT_TRUE(runs[0].ran);
   EXPECT_EQ(runs[0].window_keyframes, 4);
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());  // each run is reported once
-  const FrameResult after = slam.ProcessFrame(Sequence().frames[next]);
+  const FrameResult after = slam.ProcessFrame(test::SharedSequence(kScene, kFrames).frames[next]);
   EXPECT_EQ(after.backend_thread.backlog, after.keyframe ? 1 : 0);
   EXPECT_FALSE(after.backend_thread.delivered);
 }
@@ -123,7 +117,7 @@ TEST(SlamThreads, CompletedRunIsReportedByTheNextFrame) {
   int next = 0;
   FeedKeyFrames(&slam, 3, &next);
   slam.WaitForBackEnd();  // releases the hold: one run over the window of three, completed
-  const FrameResult r = slam.ProcessFrame(Sequence().frames[next]);
+  const FrameResult r = slam.ProcessFrame(test::SharedSequence(kScene, kFrames).frames[next]);
   EXPECT_TRUE(r.backend_thread.delivered);
   EXPECT_TRUE(r.backend.ran);
   EXPECT_EQ(r.backend.window_keyframes, 3);
@@ -141,7 +135,7 @@ TEST(SlamThreads, ResetDropsQueuedKeyFrames) {
   slam.Reset(ResetMode::kNewWorld);
   slam.WaitForBackEnd();
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());  // nothing ran: the queue was dropped
-  const FrameResult first = slam.ProcessFrame(Sequence().frames[next]);
+  const FrameResult first = slam.ProcessFrame(test::SharedSequence(kScene, kFrames).frames[next]);
   EXPECT_EQ(first.state, TrackingState::kInitialised);
   EXPECT_EQ(first.frame_index, 0);
   EXPECT_EQ(first.backend_thread.backlog, 1);  // the new map's first keyframe
@@ -150,12 +144,13 @@ TEST(SlamThreads, ResetDropsQueuedKeyFrames) {
 }
 
 TEST(SlamThreads, ResetRightAfterKeyFramesNeverReportsOldRuns) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Slam slam(BackEndOn(), BackEndMode::kThreaded);
   int next = 0;
   for (int round = 0; round < 3; ++round) {
     FeedKeyFrames(&slam, 2, &next);  // the back end may be running, queued or done
     slam.Reset(ResetMode::kNewWorld);
-    const FrameResult first = slam.ProcessFrame(Sequence().frames[next++]);
+    const FrameResult first = slam.ProcessFrame(room.frames[next++]);
     EXPECT_EQ(first.state, TrackingState::kInitialised) << "round " << round;
     EXPECT_FALSE(first.backend_thread.delivered) << "round " << round;
   }
@@ -253,7 +248,7 @@ class SnapshotReader {
 // mutex (checked once each by taking the lock out).
 TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
   constexpr int kWalkingFrames = 60, kInFlightUntil = 30;
-  static const test::RenderedSequence walking = test::RenderSequence("walking", kWalkingFrames);
+  const test::RenderedSequence& walking = test::SharedSequence("walking", kWalkingFrames);
   Slam slam(BackEndOn(), BackEndMode::kThreaded);
   slam.HoldBackEnd(true);
   slam.HoldBackEndResults(true);
@@ -295,8 +290,7 @@ TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
   EXPECT_GE(in_flight, 10);
   EXPECT_GE(delivered, 1);
   EXPECT_EQ(with_pose, kWalkingFrames);
-  const TrajectoryMetricsOptions options;
-  EXPECT_LT(EvaluateTrajectory(estimated, walking.groundtruth, {}, options).ate_m.rmse, 0.05);
+  EXPECT_LT(test::AteRmse(estimated, walking.groundtruth), 0.05);
 }
 
 }  // namespace

@@ -19,13 +19,10 @@ namespace {
 
 constexpr int kFrames = 40;
 
-const test::RenderedSequence& Sequence() {
-  static const test::RenderedSequence rendered = test::RenderSequence("walking", kFrames);
-  return rendered;
-}
-
+// Frames [begin, end) of the first kFrames of `walking` (rendered once) through `slam`.
 void Feed(Slam* slam, int begin, int end) {
-  for (int i = begin; i < end; ++i) slam->ProcessFrame(Sequence().frames[i], FrameRequest{});
+  const test::RenderedSequence& walking = test::SharedSequence("walking", kFrames);
+  for (int i = begin; i < end; ++i) slam->ProcessFrame(walking.frames[i], FrameRequest{});
 }
 
 // Sorted coordinates of a cloud, for comparing two maps whatever their order.

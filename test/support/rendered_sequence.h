@@ -1,8 +1,12 @@
 #pragma once
 // A synthetic scenario rendered in-process (seed 1) for whole-trajectory regression tests: the
-// frames, their dynamic masks and the ground-truth trajectory.
+// frames, their dynamic masks and the ground-truth trajectory; SharedSequence renders one once for
+// all the tests of a binary, TrackAll feeds its frames to a tracker.
 
+#include <cstddef>
 #include <cstdlib>
+#include <map>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +63,33 @@ inline RenderedSequence RenderSequence(const std::string& name, int frames) {
     out.masks.push_back(std::move(images[i].mask));
   }
   return out;
+}
+
+/// Feeds `frames` in order to `tracker` (anything with ProcessFrame(const RgbdFrame&) returning a
+/// FrameResult: Odometry, Slam) and calls on_result(i, result) after frame i; returns the poses
+/// it reported (has_pose): stamp and T_world_camera per frame.
+template <typename Tracker, typename OnResult>
+Trajectory TrackAll(Tracker* tracker, const std::vector<RgbdFrame>& frames, OnResult on_result) {
+  Trajectory estimated;
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const auto result = tracker->ProcessFrame(frames[i]);
+    if (result.has_pose) estimated.push_back({result.stamp_s, result.T_world_camera});
+    on_result(i, result);
+  }
+  return estimated;
+}
+
+/// RenderSequence(name, frames), rendered on the first call with these arguments in this process;
+/// every call returns that one object, which lives until the process ends (for the tests of a
+/// binary that share a sequence: rendering is the slow part). Safe to call from any thread.
+inline const RenderedSequence& SharedSequence(const std::string& name, int frames) {
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, int>, RenderedSequence> rendered;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const std::pair<std::string, int> key(name, frames);
+  auto found = rendered.find(key);
+  if (found == rendered.end()) found = rendered.emplace(key, RenderSequence(name, frames)).first;
+  return found->second;
 }
 
 }  // namespace test

@@ -26,17 +26,13 @@ RunResult RunOdometry(const Rendered& rendered, bool static_points) {
   Config config;
   config.static_points.enabled = static_points;
   Odometry odometry(config);
-  Trajectory estimated;
   RunResult out;
-  for (size_t i = 0; i < rendered.frames.size(); ++i) {
-    const FrameResult result = odometry.ProcessFrame(rendered.frames[i]);
-    ++out.frames;
-    if (result.has_pose) {
-      ++out.with_pose;
-      estimated.push_back({result.stamp_s, result.T_world_camera});
-    }
-    out.score.Add(result.points, rendered.masks[i]);
-  }
+  const Trajectory estimated =
+      test::TrackAll(&odometry, rendered.frames, [&](size_t i, const FrameResult& result) {
+        ++out.frames;
+        out.with_pose += result.has_pose;
+        out.score.Add(result.points, rendered.masks[i]);
+      });
   out.metrics = EvaluateTrajectory(estimated, rendered.groundtruth, {}, TrajectoryMetricsOptions());
   return out;
 }

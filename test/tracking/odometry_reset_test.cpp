@@ -15,16 +15,13 @@
 namespace dslam {
 namespace {
 
+// The sequence of the tests but fast_rotation's: test::SharedSequence(kScene, kFrames).
+constexpr char kScene[] = "static_room";
 constexpr int kFrames = 40;
-
-const test::RenderedSequence& Rendered() {
-  static const test::RenderedSequence rendered = test::RenderSequence("static_room", kFrames);
-  return rendered;
-}
 
 /// Ground-truth pose of frame `i` in the world of frame `origin` (the odometry's world).
 Eigen::Isometry3d Truth(int i, int origin) {
-  const Trajectory& gt = Rendered().groundtruth;
+  const Trajectory& gt = test::SharedSequence(kScene, kFrames).groundtruth;
   return gt[origin].T_world_camera.inverse() * gt[i].T_world_camera;
 }
 
@@ -33,10 +30,11 @@ double PositionError(const FrameResult& result, int i, int origin) {
 }
 
 TEST(OdometryReset, KeepPoseContinuesTheWorldFrame) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry odometry{Config()};
-  for (int i = 0; i < 20; ++i) ASSERT_TRUE(odometry.ProcessFrame(Rendered().frames[i]).has_pose);
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(odometry.ProcessFrame(room.frames[i]).has_pose);
   odometry.Reset(ResetMode::kKeepPose);
-  const FrameResult first = odometry.ProcessFrame(Rendered().frames[20]);
+  const FrameResult first = odometry.ProcessFrame(room.frames[20]);
   EXPECT_EQ(first.state, TrackingState::kInitialised);
   EXPECT_FALSE(first.has_pose);  // the assumed pose of a re-initialisation is never reported
   EXPECT_FALSE(first.reset);     // the caller reset; the frame itself did not
@@ -44,7 +42,7 @@ TEST(OdometryReset, KeepPoseContinuesTheWorldFrame) {
   // camera's motion between the two frames (measured 10-12 mm in all, with a step of ~9 mm).
   const double step = (Truth(20, 0).translation() - Truth(19, 0).translation()).norm();
   for (int i = 21; i < kFrames; ++i) {
-    const FrameResult result = odometry.ProcessFrame(Rendered().frames[i]);
+    const FrameResult result = odometry.ProcessFrame(room.frames[i]);
     ASSERT_TRUE(result.has_pose) << i;
     EXPECT_LT(PositionError(result, i, 0), step + 0.005) << i;
   }
@@ -53,28 +51,30 @@ TEST(OdometryReset, KeepPoseContinuesTheWorldFrame) {
 }
 
 TEST(OdometryReset, NewWorldStartsAtTheOrigin) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry odometry{Config()};
-  for (int i = 0; i < 20; ++i) odometry.ProcessFrame(Rendered().frames[i]);
+  for (int i = 0; i < 20; ++i) odometry.ProcessFrame(room.frames[i]);
   odometry.Reset(ResetMode::kNewWorld);
-  const FrameResult first = odometry.ProcessFrame(Rendered().frames[20]);
+  const FrameResult first = odometry.ProcessFrame(room.frames[20]);
   EXPECT_TRUE(first.has_pose);  // the first frame of a world defines it
   EXPECT_TRUE(first.T_world_camera.isApprox(Eigen::Isometry3d::Identity()));
-  const FrameResult later = odometry.ProcessFrame(Rendered().frames[30]);
+  const FrameResult later = odometry.ProcessFrame(room.frames[30]);
   ASSERT_TRUE(later.has_pose);
   EXPECT_LT(PositionError(later, 30, 20), 0.01);
 }
 
 TEST(OdometryReset, TimeGoingBackwardsStartsANewWorld) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry odometry{Config()};
-  for (int i = 0; i < 30; ++i) odometry.ProcessFrame(Rendered().frames[i]);
-  const FrameResult back = odometry.ProcessFrame(Rendered().frames[10]);
+  for (int i = 0; i < 30; ++i) odometry.ProcessFrame(room.frames[i]);
+  const FrameResult back = odometry.ProcessFrame(room.frames[10]);
   EXPECT_TRUE(back.reset);
   EXPECT_EQ(back.message, "time went backwards: reset");
   EXPECT_EQ(back.frame_index, 0);
   EXPECT_TRUE(back.has_pose);
   EXPECT_TRUE(back.T_world_camera.isApprox(Eigen::Isometry3d::Identity()));
   for (int i = 11; i < 20; ++i) {
-    const FrameResult result = odometry.ProcessFrame(Rendered().frames[i]);
+    const FrameResult result = odometry.ProcessFrame(room.frames[i]);
     EXPECT_FALSE(result.reset);
     ASSERT_TRUE(result.has_pose) << i;
     EXPECT_LT(PositionError(result, i, 10), 0.01) << i;
@@ -82,9 +82,10 @@ TEST(OdometryReset, TimeGoingBackwardsStartsANewWorld) {
 }
 
 TEST(OdometryReset, LongGapPredictsTheLastPose) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry odometry{Config()};
-  for (int i = 0; i < 20; ++i) odometry.ProcessFrame(Rendered().frames[i]);
-  RgbdFrame late = Rendered().frames[21];
+  for (int i = 0; i < 20; ++i) odometry.ProcessFrame(room.frames[i]);
+  RgbdFrame late = room.frames[21];
   late.stamp_s += 30.0;  // a paused driver: the last velocity must not be applied for 30 s
   const FrameResult result = odometry.ProcessFrame(late);
   ASSERT_TRUE(result.has_pose);
@@ -175,13 +176,14 @@ TEST(OdometryReset, RelocalisesInTheKeptMapAfterACoveredLens) {
 }
 
 TEST(OdometryReset, ListsOnlyWhenAskedAndTheSamePoses) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry full{Config()}, lean{Config()};
   FrameRequest none;
   none.points = none.edges = false;
   size_t points = 0, edges = 0;
   for (int i = 0; i < 15; ++i) {
-    const FrameResult a = full.ProcessFrame(Rendered().frames[i]);
-    const FrameResult b = lean.ProcessFrame(Rendered().frames[i], none);
+    const FrameResult a = full.ProcessFrame(room.frames[i]);
+    const FrameResult b = lean.ProcessFrame(room.frames[i], none);
     points += a.points.size();
     edges += a.edges.size();
     EXPECT_TRUE(b.points.empty() && b.edges.empty());
