@@ -24,11 +24,13 @@ import os
 import re
 import signal
 import socket
-import statistics
 import subprocess
 import sys
 import threading
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from dslam_tools.stats import NAN, median, quantile  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
@@ -54,13 +56,6 @@ def free_port():
     with socket.socket() as s:
         s.bind(("localhost", 0))
         return s.getsockname()[1]
-
-
-def percentile(values, q):
-    if not values:
-        return float("nan")
-    ordered = sorted(values)
-    return ordered[min(len(ordered) - 1, int(q / 100.0 * len(ordered)))]
 
 
 def cpu_seconds(pid):
@@ -126,13 +121,14 @@ SEPARATOR = "|" + "---|" * (HEADER.count("|") - 1)
 
 def row(minute, rss, hwm, bucket, last, cpu):
     s = bucket["states"]
+    times_ms = [quantile(bucket[key], fraction, NAN) for key, fraction in [
+        ("tracking_ms", 0.5), ("tracking_ms", 0.95), ("total_ms", 0.5), ("total_ms", 0.95),
+        ("latency_ms", 0.5)]]
     return ("| %d | %.1f | %.1f | %d | %d | %d | %d | %.1f / %.1f | %.1f / %.1f | %.1f | "
             "%d / %d / %d / %d | %d | %d | %d | %d | %.0f / %.0f | %.1f |" % (
                 minute, rss, hwm, last.frames_received, last.frames_processed,
                 last.frames_dropped, len(bucket["tracking_ms"]),
-                percentile(bucket["tracking_ms"], 50), percentile(bucket["tracking_ms"], 95),
-                percentile(bucket["total_ms"], 50), percentile(bucket["total_ms"], 95),
-                percentile(bucket["latency_ms"], 50), s["tracking"], s["recovered"], s["lost"],
+                *times_ms, s["tracking"], s["recovered"], s["lost"],
                 s["initialised"], bucket["keyframes"], bucket["backend_runs"], last.map_points,
                 bucket["window"], cpu[0], cpu[1], os.getloadavg()[0]))
 
@@ -269,8 +265,8 @@ def check(rows, final, published):
             results.append((growth < MEMORY_GROWTH_LIMIT, text))
     else:
         results.append((False, "memory growth after minute 2 needs --minutes >= 3"))
-    first = statistics.median(rows[0]["bucket"]["tracking_ms"] or [float("nan")])
-    last = statistics.median(rows[-1]["bucket"]["tracking_ms"] or [float("nan")])
+    first = median(rows[0]["bucket"]["tracking_ms"], NAN)
+    last = median(rows[-1]["bucket"]["tracking_ms"], NAN)
     change = last / first - 1.0
     results.append((abs(change) <= FRAME_TIME_LIMIT,
                     "median tracking_ms, last minute against the first: %.2f -> %.2f ms (%+.1f %%, "

@@ -2,27 +2,17 @@
 its summary JSON and status CSV), the median over rounds, the Markdown table, and the peak
 memory of a child process (os.wait4's rusage)."""
 
-import math
 import os
-import statistics
 import subprocess
 import time
+
+from dslam_tools.stats import median, quantile
 
 # Goals the table states beside its columns (the project's speed issue).
 GOAL_TRACKING_RATIO = 0.5  # current median tracking time / reference median total time
 GOAL_P95_OVER_MEDIAN = 1.5  # current p95 tracking time / its median
 GOAL_MAX_BACKLOG = 1  # [keyframes] queued for the back end and not started
 GOAL_PEAK_RSS_MIB = 150.0
-
-
-def quantile(values, fraction):
-    """The value of rank ceil(fraction * n) (1-based, clamped to [1, n]) of `values`, the rule
-    of dslam::Quantile in src/eval/run_statistics.cpp; None when `values` is empty."""
-    if not values:
-        return None
-    ordered = sorted(values)
-    rank = min(max(int(math.ceil(fraction * len(ordered))), 1), len(ordered))
-    return ordered[rank - 1]
 
 
 def backend_run_ms(rows):
@@ -50,7 +40,7 @@ def current_metrics(summary, rows, rate_hz):
         "backend_p95_ms": quantile(runs, 0.95),
         "backend_runs": summary.get("backend_runs", len(runs)),
         "keyframes": sum(1 for r in rows if r["keyframe"] == "1"),
-        "keyframe_interval_ms": quantile(keyframe_intervals_ms(rows, rate_hz), 0.5),
+        "keyframe_interval_ms": median(keyframe_intervals_ms(rows, rate_hz)),
         "max_backlog": summary["max_backlog"],
         "frames_with_pose": summary["frames_with_pose"],
         "frames": summary["frames"],
@@ -83,7 +73,7 @@ def combine_rounds(runs):
         elif key in MAX_OVER_ROUNDS:
             combined[key] = max(values)
         else:
-            combined[key] = statistics.median(values)
+            combined[key] = median(values)
     return combined
 
 
