@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "dslam/eval/assignment.h"
-#include "dslam/eval/run_statistics.h"
+#include "dslam/eval/quantile.h"
 
 namespace dslam {
 namespace {

@@ -1,7 +1,6 @@
 #include "dslam/eval/run_statistics.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <map>
 #include <stdexcept>
@@ -36,21 +35,6 @@ std::string StatusCsvRow(const FrameResult& r) {
                 r.backend.ba_iterations, r.backend.ba_ms, r.backend.spd_points,
                 r.backend.spd_culled_edges, r.backend.spd_unmarked, r.backend.spd_ms);
   return buffer;
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  return values[mid];
-}
-
-double Quantile(std::vector<double> values, double fraction) {
-  if (values.empty()) return 0.0;
-  const size_t n = values.size();
-  const auto rank = std::clamp<size_t>(static_cast<size_t>(std::ceil(fraction * n)), 1, n);
-  std::nth_element(values.begin(), values.begin() + (rank - 1), values.end());
-  return values[rank - 1];
 }
 
 void RunSummary::Add(const FrameResult& result) {

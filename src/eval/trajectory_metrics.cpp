@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "dslam/eval/quantile.h"
 #include "dslam/io/stamp_association.h"
 
 namespace dslam {
@@ -78,7 +79,7 @@ ErrorStatistics ComputeErrorStatistics(std::vector<double> errors) {
   const size_t n = errors.size();
   stats.rmse = std::sqrt(sum_squares / n);
   stats.mean = sum / n;
-  stats.median = n % 2 == 1 ? errors[n / 2] : 0.5 * (errors[n / 2 - 1] + errors[n / 2]);
+  stats.median = Median(errors);
   stats.max = errors.back();
   return stats;
 }

@@ -16,7 +16,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dslam/core/stopwatch.h"
-#include "dslam/eval/run_statistics.h"
+#include "dslam/eval/quantile.h"
 #include "dslam/features/features.h"
 #include "dslam/tracking/pose_optimizer.h"
 

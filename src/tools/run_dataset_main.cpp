@@ -21,6 +21,7 @@
 
 #include "dslam/backend/slam.h"
 #include "dslam/eval/json_writer.h"
+#include "dslam/eval/quantile.h"
 #include "dslam/eval/run_statistics.h"
 #include "dslam/eval/segmentation_score.h"
 #include "dslam/io/config_io.h"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "dslam/eval/run_statistics.h"
+#include "dslam/eval/quantile.h"
 #include "dslam/static_points/static_points.h"
 #include "dslam/synth/point_scene.h"
 

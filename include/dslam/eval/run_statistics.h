@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dslam/eval/quantile.h"
 #include "dslam/tracking/frame_result.h"
 
 namespace dslam {
@@ -14,12 +15,6 @@ std::string StatusCsvHeader();
 
 /// One CSV row of a frame's state, counts and per-stage times [ms] (no newline).
 std::string StatusCsvRow(const FrameResult& result);
-
-/// Median of `values` (0 when empty).
-double Median(std::vector<double> values);
-
-/// The `fraction`-quantile of `values` (fraction in [0, 1], nearest rank; 0 when empty).
-double Quantile(std::vector<double> values, double fraction);
 
 /// Collects per-frame results for a summary.
 class RunSummary {

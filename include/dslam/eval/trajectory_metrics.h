@@ -47,7 +47,7 @@ Eigen::Isometry3d AlignPositions(const std::vector<Eigen::Vector3d>& source,
 struct ErrorStatistics {
   double rmse = 0.0;    ///< sqrt(mean(e^2))
   double mean = 0.0;    ///< mean(e)
-  double median = 0.0;  ///< median (mean of the two middle values for an even count)
+  double median = 0.0;  ///< Median(e) (quantile.h: halfway between the middle two of an even count)
   double max = 0.0;     ///< max(e)
 };
 
