@@ -17,36 +17,31 @@ const std::vector<double> kTimes = {12.31, 9.84,  10.02, 15.7, 11.05, 9.91,  30.
                                     10.6,  11.9,  10.33, 9.77, 13.48, 10.15, 12.02,
                                     18.9,  10.88, 11.41, 9.96, 10.47, 14.22};
 
-// Exact equality: the same operations as numpy's give the same doubles.
+const std::vector<double> kFractions = {0.0, 0.1, 0.5, 0.95, 1.0};
+
+/// Checks Quantile(values, f) for f in kFractions against `expected` exactly: the same
+/// operations as numpy's give the same doubles.
+void ExpectQuantiles(const std::vector<double>& values, const std::vector<double>& expected) {
+  for (size_t i = 0; i < kFractions.size(); ++i) {
+    EXPECT_EQ(Quantile(values, kFractions[i]), expected[i]) << "fraction " << kFractions[i];
+  }
+}
+
 TEST(Quantile, OddCountEqualsNumpy) {
-  EXPECT_EQ(Quantile(kOdd, 0.0), 1.0);
-  EXPECT_EQ(Quantile(kOdd, 0.1), 1.4);
-  EXPECT_EQ(Quantile(kOdd, 0.5), 3.0);
-  EXPECT_EQ(Quantile(kOdd, 0.95), 4.8);
-  EXPECT_EQ(Quantile(kOdd, 1.0), 5.0);
+  ExpectQuantiles(kOdd, {1.0, 1.4, 3.0, 4.8, 5.0});
   EXPECT_EQ(Median(kOdd), 3.0);
 }
 
 TEST(Quantile, EvenCountInterpolatesBetweenTheMiddleValues) {
-  EXPECT_EQ(Quantile(kEven, 0.0), 1.0);
-  EXPECT_EQ(Quantile(kEven, 0.1), 1.3);
-  EXPECT_EQ(Quantile(kEven, 0.5), 2.5);
-  EXPECT_EQ(Quantile(kEven, 0.95), 3.8499999999999996);
-  EXPECT_EQ(Quantile(kEven, 1.0), 4.0);
+  ExpectQuantiles(kEven, {1.0, 1.3, 2.5, 3.8499999999999996, 4.0});
   EXPECT_EQ(Median(kEven), 2.5);  // the same function: no second rule
 }
 
 TEST(Quantile, FrameTimesEqualNumpy) {
-  EXPECT_EQ(Quantile(kTimes, 0.0), 9.77);
-  EXPECT_EQ(Quantile(kTimes, 0.1), 9.903);
-  EXPECT_EQ(Quantile(kTimes, 0.5), 10.965);
-  EXPECT_EQ(Quantile(kTimes, 0.95), 19.47500000000001);
-  EXPECT_EQ(Quantile(kTimes, 1.0), 30.4);
+  ExpectQuantiles(kTimes, {9.77, 9.903, 10.965, 19.47500000000001, 30.4});
 }
 
-TEST(Quantile, OneElementIsEveryQuantile) {
-  for (double fraction : {0.0, 0.1, 0.5, 0.95, 1.0}) EXPECT_EQ(Quantile({7.0}, fraction), 7.0);
-}
+TEST(Quantile, OneElementIsEveryQuantile) { ExpectQuantiles({7.0}, {7.0, 7.0, 7.0, 7.0, 7.0}); }
 
 TEST(Quantile, EmptyInputIsZeroAndFractionIsClamped) {
   EXPECT_EQ(Quantile({}, 0.5), 0.0);  // the summary JSON's value when nothing ran
