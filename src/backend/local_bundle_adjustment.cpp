@@ -15,6 +15,16 @@
 namespace dslam {
 namespace {
 
+// Fewer window keyframes: no local BA.
+constexpr int kMinKeyFrames = 2;
+// Points measured in fewer window keyframes are not optimised. 3 was tried and not adopted: Bonn
+// 51.1 -> 62.4 mm (BENCHMARKS.md, "Back end on or off, seeds 1-5 and `walking` over 20 seeds").
+constexpr int kMinPointKeyFrames = 2;
+// Keyframes with fewer optimised points keep their pose.
+constexpr int kMinKeyFramePoints = 10;
+// Levenberg-Marquardt iterations per round.
+constexpr int kMaxIterations = 10;
+
 // Paper Eq. rgbd_yik for keyframe k and point i: r = S (R_k p_i + t_k - y_ik), S^T S = C_ik^-1.
 // Parameters: quaternion of R_camera_world (x y z w), t_camera_world, p_world. Analytic
 // Jacobians, as the motion-only BA's residuals.
@@ -99,12 +109,13 @@ Window CollectWindow(const Map& map, int min_keyframes) {
 }
 
 // One Levenberg-Marquardt run over the measurements flagged in `use`. Returns the iterations.
-int SolveRound(const BackendConfig& config, const std::vector<bool>& use, Window* window) {
+int SolveRound(const Config& full_config, const std::vector<bool>& use, Window* window) {
+  const BackendConfig& config = full_config.backend;
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  ceres::HuberLoss huber(config.ba_huber_delta);
+  ceres::HuberLoss huber(full_config.pose.huber_delta_depth);
   ceres::EigenQuaternionManifold quaternion_manifold;
   for (size_t i = 0; i < window->measurements.size(); ++i) {
     if (!use[i]) continue;
@@ -123,15 +134,14 @@ int SolveRound(const BackendConfig& config, const std::vector<bool>& use, Window
     double* t = window->poses[k].t_camera_world.data();
     if (!problem.HasParameterBlock(q)) continue;
     problem.SetManifold(q, &quaternion_manifold);
-    if (static_cast<int>(k) < config.ba_fixed_keyframes ||
-        per_keyframe[k] < config.ba_min_keyframe_points) {
+    if (static_cast<int>(k) < config.ba_fixed_keyframes || per_keyframe[k] < kMinKeyFramePoints) {
       problem.SetParameterBlockConstant(q);
       problem.SetParameterBlockConstant(t);
     }
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_SCHUR;
-  options.max_num_iterations = config.ba_max_iterations;
+  options.max_num_iterations = kMaxIterations;
   options.num_threads = 1;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
@@ -237,20 +247,22 @@ void WriteBack(const Window& window, Map* map) {
 
 }  // namespace
 
-LocalBaStats LocalBundleAdjustment(const BackendConfig& config, Map* map) {
+LocalBaStats LocalBundleAdjustment(const Config& full_config, Map* map) {
+  const BackendConfig& config = full_config.backend;
+  const double chi2 = full_config.pose.chi2_depth;
   Stopwatch clock;
   LocalBaStats stats;
   const int num_keyframes = static_cast<int>(map->keyframes().size());
-  if (num_keyframes < config.ba_min_keyframes || num_keyframes <= config.ba_fixed_keyframes) {
+  if (num_keyframes < kMinKeyFrames || num_keyframes <= config.ba_fixed_keyframes) {
     return stats;
   }
-  Window window = CollectWindow(*map, config.ba_min_point_keyframes);
+  Window window = CollectWindow(*map, kMinPointKeyFrames);
   if (window.points.empty()) return stats;
-  std::vector<bool> use = WithinChi2(window, config.ba_chi2, map);
-  stats.iterations = SolveRound(config, use, &window);
-  use = WithinChi2(window, config.ba_chi2);
-  stats.iterations += SolveRound(config, use, &window);
-  const std::vector<bool> inliers = WithinChi2(window, config.ba_chi2);
+  std::vector<bool> use = WithinChi2(window, chi2, map);
+  stats.iterations = SolveRound(full_config, use, &window);
+  use = WithinChi2(window, chi2);
+  stats.iterations += SolveRound(full_config, use, &window);
+  const std::vector<bool> inliers = WithinChi2(window, chi2);
   const CorrectionSize correction = LargestCorrection(window, *map);
   stats.largest_correction_m = correction.metres;
   stats.largest_correction_deg = correction.degrees;

@@ -19,7 +19,7 @@ LocalMappingJob::LocalMappingJob(const Map& map, uint64_t generation)
 
 void LocalMappingJob::Run(const Config& config) {
   // Algorithm 1 over the window first: local BA then uses only the points that stayed marked.
-  if (config.backend.spd_enabled && config.static_points.enabled) {
+  if (config.static_points.enabled) {
     const WindowStaticPointsStats spd = DetermineStaticPointsInWindow(config, &window_);
     status_.spd_ran = spd.ran;
     status_.spd_keyframes = spd.keyframes;
@@ -32,7 +32,7 @@ void LocalMappingJob::Run(const Config& config) {
     status_.spd_components_ms = spd.components_ms;
     status_.spd_ms = spd.total_ms;
   }
-  const LocalBaStats ba = LocalBundleAdjustment(config.backend, &window_);
+  const LocalBaStats ba = LocalBundleAdjustment(config, &window_);
   status_.ran = ba.ran;
   status_.ba_keyframes = ba.keyframes;
   status_.ba_points = ba.points;

@@ -11,6 +11,9 @@
 namespace dslam {
 namespace {
 
+// Window keyframes sharing fewer measured points with the newest keyframe are left out.
+constexpr int kMinCovisiblePoints = 20;
+
 // Indices of the window keyframes sharing at least `min_shared` measured points with the newest
 // keyframe (the newest included), oldest first: the paper's "keyframes that have covisibility
 // with the currently added keyframe".
@@ -78,14 +81,13 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
   WindowStaticPointsStats stats;
   const Stopwatch total;
   if (map->keyframes().size() < 2) return stats;
-  const std::vector<int> keyframes =
-      CovisibleKeyFrames(*map, config.backend.spd_min_covisible_points);
+  const std::vector<int> keyframes = CovisibleKeyFrames(*map, kMinCovisiblePoints);
   if (keyframes.size() < 2) return stats;
   std::vector<PointId> ids;
   const double rotation_sigma = config.backend.spd_rotation_sigma_deg * M_PI / 180.0;
   const CorrelationInput input =
       CollectProblem(*map, keyframes, rotation_sigma * rotation_sigma, &ids);
-  if (static_cast<int>(ids.size()) < config.static_points.min_graph_points) return stats;
+  if (static_cast<int>(ids.size()) < kMinGraphPoints) return stats;
   const StaticPointsResult result = DetermineStaticPoints(input, config.static_points);
   if (result.static_component >= 0) {
     for (size_t i = 0; i < ids.size(); ++i) {

@@ -9,6 +9,9 @@
 namespace dslam {
 namespace {
 
+// Valid depths MixDepth needs of the 3x3 window (its centre included).
+constexpr int kMinValidWindowPixels = 5;
+
 bool ValidDepth(float d, const DepthNoiseConfig& config) {
   return std::isfinite(d) && d > 0.0f && d >= config.min_depth_m && d <= config.max_depth_m;
 }
@@ -41,7 +44,7 @@ std::optional<DepthMixture> MixDepth(const cv::Mat& depth_m, int col, int row,
       ++valid;
     }
   }
-  if (valid < config.min_valid_window_pixels) return std::nullopt;
+  if (valid < kMinValidWindowPixels) return std::nullopt;
   DepthMixture mixture;
   mixture.mean_m = first / weight_sum;
   // Eq. mix_gauss: sigma_c^2 = sum w (sigma_d^2 + d^2) - mu_c^2 (clamped against round-off).

@@ -104,13 +104,6 @@ int BestCandidate(const ProjectedPoint& p, const FrameFeatures& frame, const Fea
     }
     const double du = e.u - p.uv_ideal.x(), dv = e.v - p.uv_ideal.y();
     if (du * du + dv * dv > radius2) return;
-    if (p.max_offset_m > 0.0) {
-      const auto& measurement = frame.features[e.index].measurement;
-      if (measurement &&
-          (measurement->y_camera - p.p_camera).squaredNorm() > p.max_offset_m * p.max_offset_m) {
-        return;
-      }
-    }
     const int d = Hamming(descriptor, frame.descriptors.ptr<uchar>(e.index));
     if (d < best) {
       second = best;

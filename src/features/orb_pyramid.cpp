@@ -14,7 +14,8 @@ namespace dslam {
 namespace orb {
 namespace {
 
-constexpr int kFastMargin = 3;  // [px] FAST needs a radius-3 circle around each pixel
+constexpr int kFastMargin = 3;   // [px] FAST needs a radius-3 circle around each pixel
+constexpr int kCellSizePx = 30;  // [px] detection grid cell side at every level (ORB-SLAM2's W)
 
 // Share of num_features per level, proportional to 1/scale (ORB-SLAM2's split).
 std::vector<int> LevelShares(const FeaturesConfig& config) {
@@ -46,7 +47,7 @@ std::vector<std::vector<cv::KeyPoint>> DetectCells(const cv::Mat& level,
   grid.x0 = grid.y0 = kEdgeThreshold;
   grid.x1 = level.cols - kEdgeThreshold;
   grid.y1 = level.rows - kEdgeThreshold;
-  grid.size = config.cell_size_px;
+  grid.size = kCellSizePx;
   if (grid.x1 - grid.x0 < 2 * kFastMargin || grid.y1 - grid.y0 < 2 * kFastMargin) return {};
   std::vector<std::vector<cv::KeyPoint>> found = FastPerCell(level, grid, config.fast_threshold);
   std::vector<uint8_t> empty(found.size());

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iostream>
 #include <set>
 #include <sstream>
 #include <type_traits>
 
 #include "dslam/core/config_markdown.h"
+#include "dslam/core/removed_config_keys.h"
 
 namespace dslam {
 namespace {
@@ -100,7 +102,16 @@ std::string KeyName(const YAML::Node& key, const std::string& where) {
   return key.Scalar();
 }
 
-void LoadConfigNode(const YAML::Node& root, Config* config) {
+/// `text` appended to `warnings`, or printed to stderr when there is no list.
+void Warn(const std::string& text, std::vector<std::string>* warnings) {
+  if (warnings != nullptr) {
+    warnings->push_back(text);
+  } else {
+    std::cerr << "dslam: warning: " << text << "\n";
+  }
+}
+
+void LoadConfigNode(const YAML::Node& root, Config* config, std::vector<std::string>* warnings) {
   if (!root || root.IsNull()) return;
   if (!root.IsMap()) throw ConfigError("config: top level must be a map of sections");
   std::set<std::string> sections;
@@ -114,8 +125,12 @@ void LoadConfigNode(const YAML::Node& root, Config* config) {
     Section::Fields(section, YamlReader(node, std::string(name) + ".", &used));
     for (const auto& kv : node) {
       const std::string key = KeyName(kv.first, name);
-      if (!used.count(key))
-        throw ConfigError(std::string(name) + "." + Printable(key) + ": unknown parameter");
+      if (used.count(key)) continue;
+      if (const RemovedConfigKey* removed = FindRemovedConfigKey(name, key)) {
+        Warn(RemovedConfigKeyWarning(std::string(name) + "." + key, *removed), warnings);
+        continue;
+      }
+      throw ConfigError(std::string(name) + "." + Printable(key) + ": unknown parameter");
     }
   });
   for (const auto& kv : root) {
@@ -127,24 +142,25 @@ void LoadConfigNode(const YAML::Node& root, Config* config) {
 
 }  // namespace
 
-void LoadConfigYaml(const std::string& path, Config* config) {
+void LoadConfigYaml(const std::string& path, Config* config, std::vector<std::string>* warnings) {
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {
     throw ConfigError("config file " + path + ": " + e.what());
   }
-  LoadConfigNode(root, config);
+  LoadConfigNode(root, config, warnings);
 }
 
-void LoadConfigYamlString(const std::string& yaml_text, Config* config) {
+void LoadConfigYamlString(const std::string& yaml_text, Config* config,
+                          std::vector<std::string>* warnings) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
   } catch (const YAML::Exception& e) {
     throw ConfigError(std::string("config text: ") + e.what());
   }
-  LoadConfigNode(root, config);
+  LoadConfigNode(root, config, warnings);
 }
 
 std::string DescribeConfigYaml(const Config& config) {

@@ -218,7 +218,7 @@ void AddDepthChangeRegions(const CellGrid& grid, const DepthReference& reference
                            const Eigen::Isometry3d& T_world_camera, const DynamicMaskConfig& config,
                            DynamicMask* mask) {
   const size_t first_new = mask->regions.size();
-  const int stride = config.depth_change_stride;
+  const int stride = kDepthChangeStride;
   std::vector<uint8_t> changed =
       ChangedCells(grid, reference, blocked, mask->labels.ptr<uint16_t>(), T_world_camera, stride);
   for (const std::vector<int>& group :

@@ -9,13 +9,13 @@
 
 namespace dslam {
 
-FreeSpaceTolerance FreeSpaceTolerance::From(const MapConfig& config, double min_depth_m) {
+FreeSpaceTolerance FreeSpaceTolerance::From(const MapConfig& config, double min_depth_m,
+                                            double max_depth_m) {
   FreeSpaceTolerance tolerance;
   tolerance.margin_m = config.free_space_margin_m;
   tolerance.margin_ratio = config.free_space_margin_ratio;
   tolerance.min_depth_m = min_depth_m;
-  tolerance.max_depth_m = config.max_depth_m;
-  tolerance.min_misses = config.free_space_min_misses;
+  tolerance.max_depth_m = max_depth_m;
   return tolerance;
 }
 

@@ -24,14 +24,11 @@ CarriedFlow MovingObjectTracker::MaskAndFlow(const RgbdFrame& frame, const Frame
   CarriedFlow flow;
   RunSideBySide(
       [&] {
-        mask_ =
-            ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_, predicted,
-                               objects_config_.gate_m, objects_config_.track_min_points,
-                               mask_config_.depth_change_seeds ? &reference_ : nullptr);
+        mask_ = ComputeDynamicMask(frame, result.T_world_camera, result.points, mask_config_,
+                                   predicted, objects_config_.gate_m,
+                                   objects_config_.track_min_points, &reference_);
       },
-      [&] {
-        if (objects_config_.carry_points) flow = carrier_.Track(frame, result.points);
-      });
+      [&] { flow = carrier_.Track(frame, result.points); });
   return flow;
 }
 
@@ -48,15 +45,11 @@ std::vector<TrackedObject> MovingObjectTracker::Process(const RgbdFrame& frame,
   }
   const std::vector<Eigen::Vector3d> predicted = tracker_.PredictedPositions(result.stamp_s);
   CarriedFlow flow = MaskAndFlow(frame, result, predicted);
-  if (mask_config_.depth_change_seeds) reference_.Add(frame, result.T_world_camera, result.stamp_s);
-  if (objects_config_.carry_points) {
-    carrier_.Attach(std::move(flow), frame, result.T_world_camera, result.points, &mask_);
-  }
+  reference_.Add(frame, result.T_world_camera, result.stamp_s);
+  carrier_.Attach(std::move(flow), frame, result.T_world_camera, result.points, &mask_);
   SplitRegions(frame, result.T_world_camera, history_, result.stamp_s, predicted, mask_config_,
                objects_config_, &mask_);
-  if (objects_config_.join_stacked_regions) {
-    JoinStackedRegions(mask_config_, objects_config_, &mask_);
-  }
+  JoinStackedRegions(mask_config_, objects_config_, &mask_);
   std::vector<ObjectObservation> observations =
       ObservationsFromMask(mask_, objects_config_, result.stamp_s, history_, &depth_noise_,
                            result.T_world_camera.translation(), predicted);

@@ -11,6 +11,11 @@ namespace {
 
 /// [m/s] prior standard deviation of a new track's velocity (a brisk walk).
 constexpr double kInitialVelocitySigmaMps = 1.5;
+/// Points an observed velocity needs.
+constexpr int kMinVelocityPoints = 3;
+/// Mask cells a region needs to become an observation.
+constexpr int kMinCells = 20;
+
 double MedianOf(std::vector<double> values) {
   const size_t mid = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + mid, values.end());
@@ -36,7 +41,7 @@ bool RegionVelocity(const DynamicRegion& region, const std::deque<PointPositions
       rate2_sum += 1.0 / (dt_s * dt_s);
     }
   }
-  if (static_cast<int>(axes[0].size()) < config.min_velocity_points) return false;
+  if (static_cast<int>(axes[0].size()) < kMinVelocityPoints) return false;
   if (noise_rate != nullptr) *noise_rate = std::sqrt(rate2_sum) / axes[0].size();
   for (int a = 0; a < 3; ++a) (*velocity)[a] = MedianOf(axes[a]);
   return true;
@@ -83,7 +88,7 @@ std::vector<ObjectObservation> ObservationsFromMask(
       return (p - region.centroid_world).norm() <= config.gate_m;
     });
     if (n < config.min_points && !(near && n >= config.track_min_points)) continue;
-    if (region.cells < config.min_cells) continue;
+    if (region.cells < kMinCells) continue;
     ObjectObservation observation;
     observation.weak = n < config.min_points;
     observation.centroid_world = region.centroid_world;

@@ -36,11 +36,11 @@ std::vector<uint8_t> OccupiedCells(const DynamicMask& mask) {
 }  // namespace
 
 PointCarrier::PointCarrier(const ObjectsConfig& config, const DynamicMaskConfig& mask_config)
-    : window_(config.carry_window_px, config.carry_window_px),
-      levels_(config.carry_levels),
-      max_error_px_(config.carry_max_error_px),
+    : window_(kWindowPx, kWindowPx),
+      levels_(kLevels),
+      max_error_px_(kMaxErrorPx),
       max_speed_mps_(config.max_point_speed_mps),
-      max_points_(config.carry_max_points),
+      max_points_(kMaxPoints),
       max_depth_m_(mask_config.max_depth_m) {}
 
 void PointCarrier::Reset() {

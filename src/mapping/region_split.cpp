@@ -106,7 +106,7 @@ std::optional<Centres> VelocityCentres(const DynamicRegion& region,
     velocities.push_back(v);
     positions.push_back(region.points_world[i]);
   }
-  if (static_cast<int>(velocities.size()) < 2 * config.split_min_points) return std::nullopt;
+  if (static_cast<int>(velocities.size()) < 2 * kSplitMinPoints) return std::nullopt;
   const std::vector<uint8_t> group = TwoMeans(velocities);
   if (group.empty()) return std::nullopt;
   std::vector<Eigen::Vector3d> members[2], where[2];
@@ -115,7 +115,7 @@ std::optional<Centres> VelocityCentres(const DynamicRegion& region,
     where[group[k]].push_back(positions[k]);
   }
   for (const auto& m : members) {
-    if (static_cast<int>(m.size()) < config.split_min_points) return std::nullopt;
+    if (static_cast<int>(m.size()) < kSplitMinPoints) return std::nullopt;
   }
   if ((AxisMedians(members[0]) - AxisMedians(members[1])).norm() < config.split_speed_mps) {
     return std::nullopt;
@@ -202,14 +202,14 @@ std::vector<uint8_t> PointParts(const DynamicRegion& region, const CellParts& pa
 }
 
 /// Whether `parts` are two things side by side (step 5 of region_split.h): each holds
-/// split_min_points of the region's points, the horizontal ranges (10th-90th percentile of the
+/// kSplitMinPoints of the region's points, the horizontal ranges (10th-90th percentile of the
 /// cells' optical x) overlap by at most split_max_overlap of the narrower, and the parts' mean
 /// positions are at least split_min_distance_m apart.
 bool SideBySide(const CellParts& parts, const std::vector<uint8_t>& point_part,
                 const ObjectsConfig& config) {
   const auto in_one = std::count(point_part.begin(), point_part.end(), 1);
   const auto in_zero = static_cast<std::ptrdiff_t>(point_part.size()) - in_one;
-  if (std::min(in_zero, in_one) < config.split_min_points) return false;
+  if (std::min(in_zero, in_one) < kSplitMinPoints) return false;
   if ((parts.centres[0] - parts.centres[1]).norm() < config.split_min_distance_m) return false;
   std::vector<double> x[2];
   for (size_t k = 0; k < parts.cells.size(); ++k) x[parts.part[k]].push_back(parts.across[k].x());

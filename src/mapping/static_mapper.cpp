@@ -25,15 +25,17 @@ ColouredPoint Transformed(const Eigen::Isometry3f& T, const ColouredPoint& point
 StaticMapper::StaticMapper(const Config& config)
     : config_(Validated(config).map),
       mask_config_(config.dynamic_mask),
-      tolerance_(FreeSpaceTolerance::From(config.map, config.depth_noise.min_depth_m)),
+      tolerance_(FreeSpaceTolerance::From(config.map, config.depth_noise.min_depth_m,
+                                          config.depth_noise.max_depth_m)),
       min_depth_m_(config.depth_noise.min_depth_m),
+      max_depth_m_(config.depth_noise.max_depth_m),
       voxels_(config.map.voxel_size_m) {}
 
 StaticMapper::WindowKeyFrame StaticMapper::Prepare(const KeyFrameRecord& keyframe) const {
   BackProjection options;
   options.pixel_step = config_.pixel_step;
   options.min_depth_m = min_depth_m_;
-  options.max_depth_m = config_.max_depth_m;
+  options.max_depth_m = max_depth_m_;
   options.voxel_size_m = config_.voxel_size_m;
   const cv::Mat mask = config_.dynamic_masks ? DynamicPixelMask(keyframe, mask_config_) : cv::Mat();
   return WindowKeyFrame{

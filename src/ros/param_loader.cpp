@@ -1,9 +1,12 @@
 #include "dslam/ros/param_loader.h"
 
+#include <ros/console.h>
 #include <ros/node_handle.h>
 
 #include <set>
 #include <type_traits>
+
+#include "dslam/core/removed_config_keys.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -60,18 +63,25 @@ class XmlRpcReader {
   std::set<std::string>* used_;
 };
 
-/// Keys of an XmlRpc struct that are not in `used`, as an error naming the first.
+/// Keys of an XmlRpc struct that are not in `used`, as an error naming the first. With
+/// `section`, a key removed from it (removed_config_keys.h) is no error: its warning is appended
+/// to `warnings`.
 void RejectUnknown(const XmlRpcValue& tree, const std::set<std::string>& used,
-                   const std::string& prefix, const char* what) {
+                   const std::string& prefix, const char* what, const char* section = nullptr,
+                   std::vector<std::string>* warnings = nullptr) {
   for (auto it = tree.begin(); it != tree.end(); ++it) {
-    if (!used.count(it->first)) throw ConfigError(prefix + it->first + ": " + what);
+    if (used.count(it->first)) continue;
+    const RemovedConfigKey* removed =
+        section != nullptr ? FindRemovedConfigKey(section, it->first) : nullptr;
+    if (removed == nullptr) throw ConfigError(prefix + it->first + ": " + what);
+    warnings->push_back(RemovedConfigKeyWarning(prefix + it->first, *removed));
   }
 }
 
 }  // namespace
 
-void LoadParamTree(const XmlRpcValue& tree, const std::string& ns, Config* config,
-                   NodeConfig* node) {
+void LoadParamTree(const XmlRpcValue& tree, const std::string& ns, Config* config, NodeConfig* node,
+                   std::vector<std::string>* warnings) {
   const std::string root = ns.empty() || ns.back() == '/' ? ns : ns + "/";
   if (tree.getType() != XmlRpcValue::TypeStruct) {
     throw ConfigError(root + ": parameters must form a namespace (struct)");
@@ -89,7 +99,7 @@ void LoadParamTree(const XmlRpcValue& tree, const std::string& ns, Config* confi
     std::set<std::string> keys;
     using Section = std::decay_t<decltype(section)>;
     Section::Fields(section, XmlRpcReader(sub, prefix, &keys));
-    RejectUnknown(sub, keys, prefix, "unknown parameter");
+    RejectUnknown(sub, keys, prefix, "unknown parameter", name, warnings);
   });
   RejectUnknown(tree, used, root, "unknown parameter or config section");
   NodeConfig::Fields(static_cast<const NodeConfig&>(*node), BoundsChecker(root));
@@ -99,7 +109,9 @@ void LoadParamTree(const XmlRpcValue& tree, const std::string& ns, Config* confi
 void LoadRosParams(const ros::NodeHandle& private_nh, Config* config, NodeConfig* node) {
   XmlRpcValue tree;
   if (!private_nh.getParam(private_nh.getNamespace(), tree)) return;  // nothing set
-  LoadParamTree(tree, private_nh.getNamespace(), config, node);
+  std::vector<std::string> warnings;
+  LoadParamTree(tree, private_nh.getNamespace(), config, node, &warnings);
+  for (const std::string& warning : warnings) ROS_WARN("%s", warning.c_str());
 }
 
 }  // namespace ros_layer

@@ -16,9 +16,7 @@ CullingResult RunCulling(const CorrelationInput& input, const std::vector<GraphE
     return result;
   }
   CullingOptions options;
-  options.max_rounds = config.max_rounds;
   options.chi2_threshold = config.chi2_threshold;
-  options.prior_sigma_m = config.prior_sigma_m;
   options.min_inlier_fraction = config.min_inlier_fraction;
   return CullInconsistentEdges(input, edges, options);
 }
@@ -96,7 +94,6 @@ StaticPointsResult DetermineStaticPoints(const CorrelationInput& input,
   }
   result.component = ConnectedComponents(num_points, result.edges, connects);
   StaticSelectionOptions selection_options;
-  selection_options.min_component_points = config.min_component_points;
   selection_options.min_static_points = config.min_static_points;
   StaticSelection selection =
       SelectStaticComponent(result.points_world, result.component, selection_options);

@@ -1,5 +1,5 @@
 // dslam_features_bench: median runtime of ORB extraction (640x480, random-block texture with depth)
-// and of the motion-only BA with 300 RGB-D correspondences (20% outliers), once per pose.solver
+// and of the motion-only BA with 300 RGB-D correspondences (20% outliers), once per PoseSolver
 // (levenberg_marquardt, ceres; interleaved, so that load changes hit both alike). OpenCV's thread
 // count (feature detection runs in parallel) is the second argument; the BA is single-threaded.
 // Usage: dslam_features_bench [repetitions=30] [threads=1]
@@ -79,14 +79,16 @@ int main(int argc, char** argv) {
   const auto obs = Observations(*frame.camera, T_cw, &rng);
   const Eigen::Isometry3d guess = Eigen::Translation3d(0.03, 0.02, -0.03) * T_cw;
   const std::vector<std::string> solvers = {"levenberg_marquardt", "ceres"};
+  const dslam::PoseSolver kinds[] = {dslam::PoseSolver::kLevenbergMarquardt,
+                                     dslam::PoseSolver::kCeres};
   std::vector<std::vector<double>> ba_ms(solvers.size());
   std::vector<int> inliers(solvers.size(), 0);
   for (int i = 0; i < reps; ++i) {
     for (size_t k = 0; k < solvers.size(); ++k) {
-      dslam::PoseConfig config;
-      config.solver = solvers[k];
       const dslam::Stopwatch watch;
-      inliers[k] = dslam::EstimatePose(obs, guess, *frame.camera, config).num_inliers;
+      inliers[k] =
+          dslam::EstimatePose(obs, guess, *frame.camera, dslam::PoseConfig(), nullptr, kinds[k])
+              .num_inliers;
       ba_ms[k].push_back(watch.ElapsedMs());
     }
   }

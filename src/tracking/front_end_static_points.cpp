@@ -112,7 +112,7 @@ FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& 
       graph.usable.push_back(static_cast<int>(m));
     }
   }
-  if (static_cast<int>(graph.usable.size()) < config.min_graph_points) return graph;
+  if (static_cast<int>(graph.usable.size()) < kMinGraphPoints) return graph;
   graph.chosen = GraphSubset(map, matches, features, graph.usable, config.max_graph_points);
   for (int c : graph.chosen) {
     graph.points_world.push_back(map.Find(matches[graph.usable[c]].id)->p_world);
@@ -137,7 +137,7 @@ FrontEndStaticPoints DetermineStaticPointsFrontEnd(
     const std::vector<const FrameMeasurements*>& reference_frames, const StaticPointsConfig& config,
     FrontEndGraph graph) {
   FrontEndStaticPoints out;
-  if (static_cast<int>(graph.usable.size()) < config.min_graph_points) return out;
+  if (static_cast<int>(graph.usable.size()) < kMinGraphPoints) return out;
   for (int c : graph.chosen) out.graph_match.push_back(graph.usable[c]);
   const CorrelationInput input = BuildInput(matches, features, T_camera_world, reference_frames,
                                             out.graph_match, std::move(graph.points_world));

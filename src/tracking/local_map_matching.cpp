@@ -54,11 +54,7 @@ ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& ca
     candidate.uv_ideal = uv;
     candidate.descriptor = point->descriptor;
     candidate.predicted_octave = PredictOctave(*point, p_camera.norm(), scales, log_scale);
-    candidate.radius_px = point->marked ? search.radius_px : search.unmarked_radius_px;
-    if (!point->marked) {
-      candidate.max_offset_m = search.unmarked_max_offset_m;
-      candidate.p_camera = p_camera;
-    }
+    candidate.radius_px = search.radius_px;
     projected.points.push_back(std::move(candidate));
     projected.ids.push_back(id);
   }

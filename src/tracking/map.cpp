@@ -2,37 +2,9 @@
 
 #include <algorithm>
 
-#include "dslam/features/matching.h"
 #include "dslam/tracking/id_set.h"
 
 namespace dslam {
-
-void RefineDescriptor(MapPoint* point, const cv::Mat& observed, int max_observations) {
-  if (max_observations <= 1) return;
-  cv::Mat& rows = point->observed_descriptors;
-  if (rows.empty()) rows = point->descriptor.clone();
-  rows.push_back(observed);
-  if (rows.rows > max_observations)
-    rows = rows.rowRange(rows.rows - max_observations, rows.rows).clone();
-  const int n = rows.rows;
-  std::vector<int> distance(n * n, 0);
-  for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      distance[i * n + j] = distance[j * n + i] = Hamming(rows.ptr<uchar>(i), rows.ptr<uchar>(j));
-    }
-  }
-  int best = 0, best_median = -1;
-  std::vector<int> row(n);
-  for (int i = 0; i < n; ++i) {
-    row.assign(distance.begin() + i * n, distance.begin() + (i + 1) * n);
-    std::nth_element(row.begin(), row.begin() + n / 2, row.end());
-    if (best_median < 0 || row[n / 2] < best_median) {
-      best = i;
-      best_median = row[n / 2];
-    }
-  }
-  point->descriptor = rows.row(best).clone();
-}
 
 PointId Map::AddPoint(MapPoint point) {
   point.id = next_point_id_++;

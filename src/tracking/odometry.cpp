@@ -9,6 +9,13 @@
 #include "dslam/tracking/relocalisation.h"
 
 namespace dslam {
+namespace {
+
+// Features with depth needed to (re-)initialise, as a multiple of tracking.min_static_inliers, so
+// that initialisation follows that bound.
+constexpr int kInitMinPointsFactor = 2;
+
+}  // namespace
 
 Odometry::Odometry(const Config& config) : config_(config) { config_.Validate(); }
 
@@ -130,7 +137,7 @@ FrameResult Odometry::Untracked(Current* current, FrameResult result, const char
 bool Odometry::Relocalise(Current* current, int frame_index) {
   const TrackingConfig& cfg = config_.tracking;
   if (!CanRelocalise()) return false;
-  const DescriptorMatchRules rules{cfg.relocalisation_max_distance_bits, cfg.relocalisation_ratio};
+  const DescriptorMatchRules rules;
   const std::vector<PointMatch> by_descriptor =
       MatchByDescriptor(map_, WindowMarkedPoints(map_), current->features, rules);
   const uint32_t seed = static_cast<uint32_t>(frame_index) + 2u;  // SolvePose uses +0 and +1
@@ -171,7 +178,7 @@ bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
 
 FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   const int with_depth = current->features.NumWithDepth();
-  if (with_depth < config_.tracking.min_static_inliers * config_.tracking.init_min_points_factor) {
+  if (with_depth < config_.tracking.min_static_inliers * kInitMinPointsFactor) {
     return Lost(current, std::move(result), "too few features with depth to initialise");
   }
   // The first frame defines the world; after a loss the map restarts at the last good pose.

@@ -8,6 +8,18 @@
 #include "dslam/tracking/odometry.h"
 
 namespace dslam {
+namespace {
+
+// [m] The near plane of the local-map search: map points nearer than this along the optical axis
+// (so also points behind the camera) are not projected. Keeps projections off z = 0; below every
+// sensor's depth range (depth_noise.min_depth_m 0.3 m by default).
+constexpr double kSearchMinDepthM = 0.1;
+
+// Sightings (frames a point projected into the image) before map culling checks a point's
+// found/visible ratio (tracking.cull_min_found_ratio).
+constexpr int kCullMinVisible = 8;
+
+}  // namespace
 
 void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
                                    bool wide) {
@@ -47,9 +59,7 @@ ProjectedLocalMap Odometry::ProjectUnmatchedLocalPoints(const Current& current,
 LocalMapSearch Odometry::SearchWithin(double radius_px, bool count_visible) const {
   LocalMapSearch search;
   search.radius_px = radius_px;
-  search.unmarked_radius_px = std::max(radius_px, config_.tracking.unmarked_search_radius_px);
-  search.unmarked_max_offset_m = config_.tracking.unmarked_max_offset_m;
-  search.min_depth_m = config_.tracking.search_min_depth_m;
+  search.min_depth_m = kSearchMinDepthM;
   search.count_visible = count_visible;
   if (config_.tracking.follow_last_measurement) search.last_frame = &previous_;
   return search;
@@ -82,10 +92,10 @@ bool Odometry::SolvePose(Current* current, const Eigen::Isometry3d& T_camera_wor
   current->pose = SolvePoseFromStaticPoints(*current, T_camera_world_guess);
   if (!EnoughInliers(current->pose)) {
     // Too few inliers from the static points at the predicted pose (fast motion, or people fill
-    // the view): a RANSAC pose needs no prediction (tracking.robust_pose_points says who votes).
-    const std::string& voters = config_.tracking.robust_pose_points;
-    if (voters != "all") current->pose = RobustPose(*current, PointSelection::kMarked, ransac_seed);
-    if (voters == "all" || (voters == "marked_first" && !EnoughInliers(current->pose))) {
+    // the view): a RANSAC pose needs no prediction. The marked matches vote first (a crowd
+    // filling the view cannot win), then all of them.
+    current->pose = RobustPose(*current, PointSelection::kMarked, ransac_seed);
+    if (!EnoughInliers(current->pose)) {
       current->pose = RobustPose(*current, PointSelection::kAll, ransac_seed);
     }
     if (!EnoughInliers(current->pose)) return false;
@@ -224,21 +234,9 @@ void Odometry::FuseStaticPoints(const Current& current) {
   }
 }
 
-void Odometry::RefineDescriptors(const Current& current) {
-  const int keep = config_.tracking.descriptor_observations;
-  if (keep <= 1) return;
-  for (size_t m = 0; m < current.matches.size(); ++m) {
-    if (!DrovePose(current, m)) continue;
-    MapPoint* point = map_.Find(current.matches[m].id);
-    if (point == nullptr) continue;
-    RefineDescriptor(point, current.features.descriptors.row(current.matches[m].feature), keep);
-  }
-}
-
 int Odometry::MakeKeyFrame(const Current& current) {
   const TrackingConfig& cfg = config_.tracking;
   if (cfg.fuse_static_points) FuseStaticPoints(current);
-  RefineDescriptors(current);
   const int frame_index = frame_index_ - 1;
   const std::vector<int> dynamic = config_.static_points.enabled
                                        ? DynamicNeighbourhood(current.features, current.matches,
@@ -257,7 +255,7 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.measurements = MeasurementsOf(current, created);
   keyframe.information = current.pose.information;
   map_.AddKeyFrame(std::move(keyframe), cfg.window_keyframes);
-  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, cfg.cull_min_visible,
+  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, kCullMinVisible,
             StaticSeenSinceFrame());
   last_keyframe_frame_ = frame_index;
   last_keyframe_static_ = current.pose.num_inliers;

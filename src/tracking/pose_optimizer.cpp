@@ -92,7 +92,8 @@ double SquaredError(const PoseObservation& o, const Eigen::Isometry3d& T_camera_
 
 PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
                         const Eigen::Isometry3d& T_camera_world_guess, const PinholeCamera& camera,
-                        const PoseConfig& config, const std::vector<bool>* initial_inliers) {
+                        const PoseConfig& config, const std::vector<bool>* initial_inliers,
+                        PoseSolver solver_kind) {
   PoseResult result;
   result.T_camera_world = T_camera_world_guess;
   result.inliers.assign(observations.size(), true);
@@ -102,7 +103,7 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
   if (std::count(result.inliers.begin(), result.inliers.end(), true) < 3) return result;
   Eigen::Quaterniond q(T_camera_world_guess.rotation());
   Eigen::Vector3d t = T_camera_world_guess.translation();
-  const bool use_ceres = config.solver == "ceres";
+  const bool use_ceres = solver_kind == PoseSolver::kCeres;
   const std::vector<Eigen::Matrix3d> sqrt_information = internal::SqrtInformations(observations);
   std::optional<internal::PoseLevenbergMarquardt> solver;
   if (!use_ceres) solver.emplace(observations, sqrt_information, camera, config);

@@ -78,7 +78,7 @@ RansacResult RansacPose(const std::vector<PoseObservation>& obs, const PoseConfi
   result.inliers.assign(obs.size(), false);
   std::vector<int> depth_idx;
   std::vector<Eigen::Matrix3d> info(obs.size(), Eigen::Matrix3d::Zero());
-  const double s2 = config.ransac_extra_sigma_m * config.ransac_extra_sigma_m;
+  const double s2 = kRansacExtraSigmaM * kRansacExtraSigmaM;
   for (size_t i = 0; i < obs.size(); ++i) {
     if (!obs[i].has_depth) continue;
     depth_idx.push_back(static_cast<int>(i));
@@ -88,7 +88,7 @@ RansacResult RansacPose(const std::vector<PoseObservation>& obs, const PoseConfi
   std::mt19937 rng(seed);
   std::uniform_int_distribution<size_t> pick(0, depth_idx.size() - 1);
   Score best;
-  int needed = config.ransac_max_iterations;
+  int needed = kRansacMaxHypotheses;
   std::vector<bool> inliers;
   for (int it = 0; it < needed; ++it) {
     int s[3] = {depth_idx[pick(rng)], depth_idx[pick(rng)], depth_idx[pick(rng)]};
@@ -102,7 +102,7 @@ RansacResult RansacPose(const std::vector<PoseObservation>& obs, const PoseConfi
       result.T_camera_world = T;
       result.inliers = inliers;
       needed = RequiredHypotheses(static_cast<double>(best.inliers) / depth_idx.size(),
-                                  config.ransac_confidence, config.ransac_max_iterations);
+                                  kRansacConfidence, kRansacMaxHypotheses);
     }
   }
   if (best.inliers < 3) return result;
@@ -119,7 +119,7 @@ RansacResult RansacPose(const std::vector<PoseObservation>& obs, const PoseConfi
 
 PoseResult EstimatePoseRobust(const std::vector<PoseObservation>& observations,
                               const PinholeCamera& camera, const PoseConfig& config,
-                              std::uint32_t seed) {
+                              std::uint32_t seed, PoseSolver solver) {
   const RansacResult ransac = RansacPose(observations, config, seed);
   if (!ransac.success) {
     PoseResult failed;
@@ -132,7 +132,7 @@ PoseResult EstimatePoseRobust(const std::vector<PoseObservation>& observations,
     if (observations[i].has_depth) continue;
     initial[i] = SquaredError(observations[i], ransac.T_camera_world, camera) < config.chi2_pixel;
   }
-  return EstimatePose(observations, ransac.T_camera_world, camera, config, &initial);
+  return EstimatePose(observations, ransac.T_camera_world, camera, config, &initial, solver);
 }
 
 }  // namespace dslam

@@ -87,11 +87,11 @@ double Cost(const Map& map, const std::vector<Eigen::Isometry3d>& T_camera_world
 
 // Only the first keyframe is at its true pose, and moves of up to ~6 cm from the perturbed start
 // are expected: one fixed keyframe, no correction limit.
-BackendConfig Unlimited() {
-  BackendConfig config;
-  config.ba_fixed_keyframes = 1;
-  config.ba_max_correction_m = 100.0;
-  config.ba_max_correction_deg = 180.0;
+Config Unlimited() {
+  Config config;
+  config.backend.ba_fixed_keyframes = 1;
+  config.backend.ba_max_correction_m = 100.0;
+  config.backend.ba_max_correction_deg = 180.0;
   return config;
 }
 
@@ -135,7 +135,7 @@ TEST(LocalBundleAdjustment, FirstKeyFrameStaysFixed) {
 
 TEST(LocalBundleAdjustment, LeavesOutOutliersButKeepsThem) {
   Scene scene = MakeScene(5, 60, 3);
-  const BackendConfig config = Unlimited();
+  const Config config = Unlimited();
   KeyFrame& keyframe = scene.map.mutable_keyframes()[3];
   keyframe.measurements.by_point.at(7).y_camera += Eigen::Vector3d(0.0, 0.2, 0.3);
   const LocalBaStats stats = LocalBundleAdjustment(config, &scene.map);
@@ -165,8 +165,9 @@ TEST(LocalBundleAdjustment, UnverifiedPointsFollowTheirNewestKeyFrame) {
 
 TEST(LocalBundleAdjustment, LargeCorrectionsAreNotApplied) {
   Scene scene = MakeScene(5, 60, 6);
-  BackendConfig config = Unlimited();
-  config.ba_max_correction_m = 0.001;  // the perturbation is ~35 mm: the solution moves more
+  Config config = Unlimited();
+  config.backend.ba_max_correction_m =
+      0.001;  // the perturbation is ~35 mm: the solution moves more
   const Eigen::Isometry3d before = scene.map.keyframes()[4].T_world_camera;
   const Eigen::Vector3d p = scene.map.Find(5)->p_world;
   const LocalBaStats stats = LocalBundleAdjustment(config, &scene.map);
@@ -180,7 +181,7 @@ TEST(LocalBundleAdjustment, LargeCorrectionsAreNotApplied) {
 TEST(LocalBundleAdjustment, TooFewKeyFramesChangeNothing) {
   Scene scene = MakeScene(1, 30, 5);
   const Eigen::Vector3d p = scene.map.Find(3)->p_world;
-  EXPECT_FALSE(LocalBundleAdjustment(BackendConfig(), &scene.map).ran);
+  EXPECT_FALSE(LocalBundleAdjustment(Config(), &scene.map).ran);
   EXPECT_EQ(scene.map.Find(3)->p_world, p);
 }
 

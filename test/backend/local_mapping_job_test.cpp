@@ -66,7 +66,7 @@ TEST(LocalMappingJob, CopyRunApplyEqualsTheRunInPlace) {
   const Config config = TestConfig();
   Map in_place = MakeMap(3), live = MakeMap(3);
   DetermineStaticPointsInWindow(config, &in_place);
-  LocalBundleAdjustment(config.backend, &in_place);
+  LocalBundleAdjustment(config, &in_place);
   LocalMappingJob job(live, 7);
   job.Run(config);
   job.Apply(&live);

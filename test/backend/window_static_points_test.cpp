@@ -124,8 +124,10 @@ TEST(WindowStaticPoints, NeedsTwoKeyFramesAndCovisibility) {
   Config config;
   Scene one = MakeScene(1, 0.01, 6);
   EXPECT_FALSE(DetermineStaticPointsInWindow(config, &one.map).ran);
-  config.backend.spd_min_covisible_points = 1000;  // no other keyframe shares that many
   Scene scene = MakeScene(12, 0.01, 7);
+  // The newest keyframe keeps 10 measurements: every other keyframe shares fewer than 20 with it.
+  auto& newest = scene.map.mutable_keyframes().back().measurements.by_point;
+  for (PointId id = 10; id < 240; ++id) newest.erase(id);
   EXPECT_FALSE(DetermineStaticPointsInWindow(config, &scene.map).ran);
   EXPECT_EQ(CountMarked(scene.map, scene.moving_ids), 40);
 }

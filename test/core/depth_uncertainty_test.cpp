@@ -46,7 +46,7 @@ TEST(DepthUncertainty, RejectsInvalidCentreAndSparseWindow) {
   depth.rowRange(199, 200).setTo(0.0);  // rows 199 and 201 empty: 3 of 9 valid
   depth.rowRange(201, 202).setTo(0.0);
   EXPECT_FALSE(MixDepth(depth, 100, 200, config));
-  config.min_valid_window_pixels = 3;
+  depth.rowRange(201, 202).setTo(2.0);  // row 199 empty: 6 of 9 valid, at least 5
   const auto renormalised = MixDepth(depth, 100, 200, config);
   ASSERT_TRUE(renormalised);
   EXPECT_NEAR(renormalised->mean_m, 2.0, 1e-9);  // weights renormalised over valid pixels

@@ -86,29 +86,6 @@ TEST(Matching, PerPointRadiusOverridesTheOptions) {
   EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
 }
 
-TEST(Matching, MaxOffsetSkipsCandidatesMeasuredFarFromThePrediction) {
-  std::mt19937 rng(6);
-  FrameFeatures frame = GridFrame(&rng);
-  PointMeasurement at_2m;
-  at_2m.y_camera = Eigen::Vector3d(0.1, 0.2, 2.0);
-  at_2m.covariance = Eigen::Matrix3d::Identity() * 1e-4;
-  frame.features[0].measurement = at_2m;
-  ProjectedPoint p;
-  p.uv_ideal = frame.features[0].uv_ideal;
-  p.descriptor = frame.descriptors.row(0).clone();
-  p.p_camera = Eigen::Vector3d(0.1, 0.2, 2.25);  // 0.25 m in front of the measurement
-  p.max_offset_m = 0.3;
-  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
-  p.max_offset_m = 0.2;
-  EXPECT_EQ(SearchByProjection({p}, frame)[0], -1);
-  p.max_offset_m = 0.0;  // no test
-  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
-  // A candidate without depth is not tested.
-  frame.features[0].measurement.reset();
-  p.max_offset_m = 0.2;
-  EXPECT_EQ(SearchByProjection({p}, frame)[0], 0);
-}
-
 TEST(Matching, RatioTestAndUniqueness) {
   std::mt19937 rng(4);
   FrameFeatures frame = GridFrame(&rng);

@@ -11,8 +11,9 @@ namespace fuzz {
 void ConfigYamlHarness(const std::string& data) {
   ParsedOrRejected<ConfigError>("", [&] {
     Config config;
+    std::vector<std::string> warnings;  // removed keys: collected, not printed
     try {
-      LoadConfigYamlString(data, &config);
+      LoadConfigYamlString(data, &config, &warnings);
     } catch (const YAML::Exception& e) {
       throw ContractViolation(std::string("yaml-cpp exception escaped: ") + e.what());
     }

@@ -2,12 +2,14 @@
 
 #include <fstream>
 #include <iterator>
-
+#include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "dslam/core/removed_config_keys.h"
 #include "dslam/io/config_io.h"
 #include "support/generated_block.h"
 
@@ -40,6 +42,48 @@ TEST(Config, YamlRejectsUnknownKeysAndBadTypes) {
   EXPECT_THROW(LoadConfigYamlString("datasett: {}", &config), ConfigError);
   EXPECT_THROW(LoadConfigYamlString("dataset: {association_max_dt_s: fast}", &config), ConfigError);
   EXPECT_THROW(LoadConfigYamlString("dataset: {association_max_dt_s: 5.0}", &config), ConfigError);
+}
+
+// A removed parameter is ignored with a warning naming it; loading goes on.
+TEST(Config, YamlWarnsAboutRemovedKeys) {
+  Config config;
+  std::vector<std::string> warnings;
+  LoadConfigYamlString(
+      "tracking: {descriptor_observations: 8, window_keyframes: 7}\nmap: {max_depth_m: 4.0}\n",
+      &config, &warnings);
+  EXPECT_EQ(config.tracking.window_keyframes, 7);
+  EXPECT_DOUBLE_EQ(config.depth_noise.max_depth_m, 6.0);  // the merged key's value is ignored
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].rfind("tracking.descriptor_observations was removed (tried, off: ", 0), 0u)
+      << warnings[0];
+  EXPECT_EQ(warnings[1],
+            "map.max_depth_m was removed (merged into depth_noise.max_depth_m); its value is "
+            "ignored");
+  // Unknown keys stay errors, in the sections of removed keys too.
+  EXPECT_THROW(LoadConfigYamlString("tracking: {descriptor_observation: 8}", &config, &warnings),
+               ConfigError);
+  EXPECT_EQ(warnings.size(), 2u);
+}
+
+// Every removed key names a section that exists and a key that it no longer has.
+TEST(Config, RemovedKeysAreNotParameters) {
+  std::set<std::string> sections, parameters;
+  Config config;
+  Config::Sections(config, [&](const char* section, auto& s) {
+    sections.insert(section);
+    using Section = std::decay_t<decltype(s)>;
+    Section::Fields(s, [&](const FieldInfo& info, auto&) {
+      parameters.insert(std::string(section) + "." + info.name);
+    });
+  });
+  EXPECT_GE(RemovedConfigKeys().size(), 40u);
+  for (const RemovedConfigKey& key : RemovedConfigKeys()) {
+    const std::string name = std::string(key.section) + "." + key.name;
+    EXPECT_TRUE(sections.count(key.section)) << name;
+    EXPECT_FALSE(parameters.count(name)) << name;
+    EXPECT_EQ(FindRemovedConfigKey(key.section, key.name), &key);
+  }
+  EXPECT_EQ(FindRemovedConfigKey("tracking", "window_keyframes"), nullptr);
 }
 
 TEST(Config, YamlRejectsKeysThatAreNotNames) {
@@ -80,7 +124,9 @@ TEST(Config, ShippedYamlFilesLoad) {
   ASSERT_FALSE(files.empty());
   for (const std::string& name : files) {
     Config config;
-    EXPECT_NO_THROW(LoadConfigYaml(dir + "/" + name, &config)) << name;
+    std::vector<std::string> warnings;
+    EXPECT_NO_THROW(LoadConfigYaml(dir + "/" + name, &config, &warnings)) << name;
+    EXPECT_TRUE(warnings.empty()) << name << ": " << (warnings.empty() ? "" : warnings[0]);
   }
 }
 

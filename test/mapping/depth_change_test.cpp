@@ -51,11 +51,7 @@ Eigen::Isometry3d CameraAt(double tx) {
   return T;
 }
 
-DynamicMaskConfig SeedConfig() {
-  DynamicMaskConfig config;
-  config.depth_change_seeds = true;
-  return config;
-}
+DynamicMaskConfig SeedConfig() { return DynamicMaskConfig(); }
 
 /// Share of the cells whose centre pixel sees the box at camera x `tx` that are labelled, and
 /// the number of labelled cells that see the wall.

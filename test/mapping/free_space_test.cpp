@@ -24,8 +24,7 @@ FreeSpaceTolerance Tolerance() {
   Config config = MapTestConfig();
   config.map.free_space_margin_m = 0.1;
   config.map.free_space_margin_ratio = 0.03;
-  config.map.max_depth_m = 4.0;
-  return FreeSpaceTolerance::From(config.map, 0.3);
+  return FreeSpaceTolerance::From(config.map, 0.3, 4.0);
 }
 
 TEST(DepthView, VotesOnPointsAlongTheRays) {

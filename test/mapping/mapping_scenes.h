@@ -51,12 +51,13 @@ inline std::function<float(int, int)> WallWithBox(float wall, float box, int u0,
   return [=](int u, int v) { return u >= u0 && u < u1 && v >= v0 && v < v1 ? box : wall; };
 }
 
-/// The map's configuration of the tests: 5 cm voxels, pixel_step 4, no mask unless asked.
+/// The map's configuration of the tests: 5 cm voxels, pixel_step 4, depths up to 4 m, no mask
+/// unless asked.
 inline Config MapTestConfig() {
   Config config;
   config.map.voxel_size_m = 0.05;
   config.map.pixel_step = 4;
-  config.map.max_depth_m = 4.0;
+  config.depth_noise.max_depth_m = 4.0;
   return config;
 }
 

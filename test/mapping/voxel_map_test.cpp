@@ -94,7 +94,7 @@ TEST(VoxelMap, CarveRemovesWhatAViewSeesThroughAndKeepsWellSupportedVoxels) {
   ASSERT_EQ(map.size(), 2u);
   const KeyFrameRecord wall = MakeKeyFrame(3, Wall(3.0f));
   const DepthView view(wall.frame, Eigen::Isometry3d::Identity(), 4, 0.3);
-  const FreeSpaceTolerance tolerance = FreeSpaceTolerance::From(MapTestConfig().map, 0.3);
+  const FreeSpaceTolerance tolerance = FreeSpaceTolerance::From(MapTestConfig().map, 0.3, 4.0);
   // Only voxels last hit by the given keyframe or a later one vote (`twice`: 1, `once`: 2).
   EXPECT_EQ(map.Carve(view, tolerance, 3), 0u);
   ASSERT_EQ(map.size(), 2u);

@@ -1,5 +1,8 @@
 #include "dslam/ros/param_loader.h"
 
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 namespace dslam {
@@ -18,7 +21,9 @@ XmlRpc::XmlRpcValue Tree() {
 TEST(ParamLoader, ReadsNodeAndCoreKeys) {
   Config config;
   NodeConfig node;
-  LoadParamTree(Tree(), "/dslam", &config, &node);
+  std::vector<std::string> warnings;
+  LoadParamTree(Tree(), "/dslam", &config, &node, &warnings);
+  EXPECT_TRUE(warnings.empty());
   EXPECT_EQ(node.queue_size, 3);
   EXPECT_EQ(node.odom_frame, "world_odom");
   EXPECT_EQ(config.tracking.window_keyframes, 5);
@@ -28,8 +33,9 @@ TEST(ParamLoader, ReadsNodeAndCoreKeys) {
 void ExpectError(const XmlRpc::XmlRpcValue& tree, const std::string& name) {
   Config config;
   NodeConfig node;
+  std::vector<std::string> warnings;
   try {
-    LoadParamTree(tree, "/dslam", &config, &node);
+    LoadParamTree(tree, "/dslam", &config, &node, &warnings);
     FAIL() << "no error for " << name;
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
@@ -49,6 +55,27 @@ TEST(ParamLoader, ErrorsNameTheParameter) {
   XmlRpc::XmlRpcValue unknown_top = Tree();
   unknown_top["qeue_size"] = 3;
   ExpectError(unknown_top, "/dslam/qeue_size");
+}
+
+// A removed core key is ignored with a warning naming it; unknown keys stay errors.
+TEST(ParamLoader, WarnsAboutRemovedKeys) {
+  XmlRpc::XmlRpcValue tree = Tree();
+  tree["pose"]["solver"] = std::string("ceres");
+  tree["backend"]["ba_chi2"] = 9.0;
+  Config config;
+  NodeConfig node;
+  std::vector<std::string> warnings;
+  LoadParamTree(tree, "/dslam", &config, &node, &warnings);
+  EXPECT_EQ(config.tracking.window_keyframes, 5);
+  EXPECT_DOUBLE_EQ(config.pose.chi2_depth, Config().pose.chi2_depth);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].rfind("/dslam/pose/solver was removed (", 0), 0u) << warnings[0];
+  EXPECT_EQ(warnings[1],
+            "/dslam/backend/ba_chi2 was removed (merged into pose.chi2_depth); its value is "
+            "ignored");
+  XmlRpc::XmlRpcValue top = Tree();
+  top["solver"] = std::string("ceres");  // a removed key outside its section is unknown
+  ExpectError(top, "/dslam/solver");
 }
 
 }  // namespace

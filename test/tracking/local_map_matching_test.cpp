@@ -42,40 +42,6 @@ class LocalMapMatchingTest : public ::testing::Test {
   Map map_;
 };
 
-TEST_F(LocalMapMatchingTest, UnmarkedPointsSearchWithTheirOwnRadius) {
-  // 0.06 m sideways at 2 m: 15 px from the feature.
-  const Eigen::Vector3d p_world(0.06, 0.0, 2.0);
-  const PointId marked = AddPoint(&map_, frame_, p_world, true);
-  const PointId unmarked = AddPoint(&map_, frame_, p_world, false);
-  LocalMapSearch search;
-  search.radius_px = 10.0;
-  search.unmarked_radius_px = 16.0;
-  for (const PointId id : {marked, unmarked}) {
-    std::vector<bool> taken(1, false);
-    const std::vector<PointMatch> matches =
-        MatchLocalMap(&map_, {id}, frame_, camera_, Eigen::Isometry3d::Identity(), search, &taken);
-    ASSERT_EQ(matches.size(), id == unmarked ? 1u : 0u);
-    EXPECT_EQ(taken[0], id == unmarked);
-  }
-}
-
-TEST_F(LocalMapMatchingTest, UnmarkedPointsMatchOnlyNearTheirLastPosition) {
-  LocalMapSearch search;
-  search.unmarked_max_offset_m = 0.3;
-  // On the feature's ray, 0.5 m behind its measurement: the projection agrees, the depth not.
-  const PointId far_unmarked = AddPoint(&map_, frame_, Eigen::Vector3d(0.0, 0.0, 2.5), false);
-  const PointId far_marked = AddPoint(&map_, frame_, Eigen::Vector3d(0.0, 0.0, 2.5), true);
-  const PointId near_unmarked = AddPoint(&map_, frame_, Eigen::Vector3d(0.0, 0.0, 2.2), false);
-  for (const PointId id : {far_unmarked, far_marked, near_unmarked}) {
-    std::vector<bool> taken(1, false);
-    const size_t expected = id == far_unmarked ? 0u : 1u;
-    EXPECT_EQ(
-        MatchLocalMap(&map_, {id}, frame_, camera_, Eigen::Isometry3d::Identity(), search, &taken)
-            .size(),
-        expected);
-  }
-}
-
 TEST_F(LocalMapMatchingTest, MarkedPointsAreSearchedAroundTheirLastMeasurement) {
   // The map position is 0.06 m (15 px) from the feature; the last frame, 0.1 m to the left of
   // this one, measured the point at the feature's 3D position: (0.1, 0, 2) in its camera frame.

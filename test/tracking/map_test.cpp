@@ -85,40 +85,6 @@ TEST(Map, VerifiedStaticPointsOutsideTheWindowAreKeptAndSearched) {
   EXPECT_EQ(map.Find(g), nullptr);
 }
 
-cv::Mat Descriptor(uint8_t fill) { return cv::Mat(1, 32, CV_8UC1, cv::Scalar(fill)); }
-
-// `bits` low bits of the first bytes of `d` flipped, one per byte.
-cv::Mat FlipBits(const cv::Mat& d, int bits) {
-  cv::Mat out = d.clone();
-  for (int b = 0; b < bits; ++b) out.at<uint8_t>(0, b) ^= 1;
-  return out;
-}
-
-TEST(RefineDescriptor, TakesTheMedoidAndKeepsTheNewestObservations) {
-  MapPoint point;
-  point.descriptor = FlipBits(Descriptor(0), 6);  // created from an unusual view
-  RefineDescriptor(&point, Descriptor(0), 4);
-  RefineDescriptor(&point, FlipBits(Descriptor(0), 2), 4);
-  RefineDescriptor(&point, Descriptor(255), 4);  // a wrong match, far from all others
-  // Kept: creating (6 bits off), 0, 2 bits off, 255. Third smallest distance of each (self
-  // included): 6, 6, 4, 254: the one 2 bits off.
-  EXPECT_EQ(point.observed_descriptors.rows, 4);
-  EXPECT_EQ(cv::norm(point.descriptor, FlipBits(Descriptor(0), 2), cv::NORM_HAMMING), 0.0);
-  RefineDescriptor(&point, FlipBits(Descriptor(0), 1), 4);  // the creating one is dropped
-  EXPECT_EQ(point.observed_descriptors.rows, 4);
-  EXPECT_EQ(cv::norm(point.observed_descriptors.row(0), Descriptor(0), cv::NORM_HAMMING), 0.0);
-  // Kept: 0, 2 bits off, 255, 1 bit off: 2, 2, 255, 1: the one 1 bit off.
-  EXPECT_EQ(cv::norm(point.descriptor, FlipBits(Descriptor(0), 1), cv::NORM_HAMMING), 0.0);
-}
-
-TEST(RefineDescriptor, OneObservationKeepsTheCreatingDescriptor) {
-  MapPoint point;
-  point.descriptor = Descriptor(7);
-  RefineDescriptor(&point, Descriptor(200), 1);
-  EXPECT_TRUE(point.observed_descriptors.empty());
-  EXPECT_EQ(cv::norm(point.descriptor, Descriptor(7), cv::NORM_HAMMING), 0.0);
-}
-
 // The label transitions both static point determinations use (front end: Unmark(0) per dynamic
 // frame, LookedStatic per static frame; back end: Unmark(remark_frames)).
 TEST(MapPointLabels, UnmarkCountsTheEvidenceAndLookedStaticMarksAgain) {

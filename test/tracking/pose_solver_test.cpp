@@ -1,5 +1,6 @@
-// The hand-written Levenberg-Marquardt pose solver (pose.solver = levenberg_marquardt) against the
-// Ceres solve of the same cost (pose.solver = ceres) and against the known pose of seeded scenes.
+// The hand-written Levenberg-Marquardt pose solver (PoseSolver::kLevenbergMarquardt, what dslam
+// runs) against the Ceres solve of the same cost (PoseSolver::kCeres, the reference) and against
+// the known pose of seeded scenes.
 
 #include <cmath>
 #include <string>
@@ -13,12 +14,6 @@
 
 namespace dslam {
 namespace {
-
-PoseConfig WithSolver(const std::string& solver) {
-  PoseConfig config;
-  config.solver = solver;
-  return config;
-}
 
 Eigen::Isometry3d Offset(const Eigen::Isometry3d& T, double metres, double radians) {
   return Eigen::Translation3d(metres * Eigen::Vector3d(0.6, -0.48, 0.64)) *
@@ -62,9 +57,9 @@ TEST_P(PoseSolverTest, MatchesCeresAndRecoversTruth) {
     const test::PoseScene scene =
         test::MakePoseScene(camera, 300, c.outliers, 100 + seed, c.pixel_only_every);
     const Eigen::Isometry3d start = Offset(scene.T_camera_world, c.start_m, c.start_rad);
-    const PoseResult lm =
-        EstimatePose(scene.observations, start, camera, WithSolver("levenberg_marquardt"));
-    const PoseResult ceres = EstimatePose(scene.observations, start, camera, WithSolver("ceres"));
+    const PoseResult lm = EstimatePose(scene.observations, start, camera, PoseConfig());
+    const PoseResult ceres =
+        EstimatePose(scene.observations, start, camera, PoseConfig(), nullptr, PoseSolver::kCeres);
     ExpectSameSolution(lm, ceres);
     EXPECT_LT(TranslationError(lm.T_camera_world, scene.T_camera_world), 0.005);
     EXPECT_LT(RotationErrorRad(lm.T_camera_world, scene.T_camera_world), 0.2 * M_PI / 180.0);
@@ -95,7 +90,7 @@ TEST(PoseSolver, ExactDataGivesTruePose) {
     o.uv_ideal = camera.Project(p);
   }
   const PoseResult r = EstimatePose(scene.observations, Offset(scene.T_camera_world, 0.05, 0.05),
-                                    camera, WithSolver("levenberg_marquardt"));
+                                    camera, PoseConfig());
   ASSERT_TRUE(r.success);
   EXPECT_LT(TranslationError(r.T_camera_world, scene.T_camera_world), 1e-9);
   EXPECT_LT(RotationErrorRad(r.T_camera_world, scene.T_camera_world), 1e-9);
@@ -107,7 +102,7 @@ TEST(PoseSolver, ExactDataGivesTruePose) {
 TEST(PoseSolver, FinalCostIsTheHuberCost) {
   const PinholeCamera camera = test::TestCamera();
   const test::PoseScene scene = test::MakePoseScene(camera, 200, 0.3, 8, 4);
-  PoseConfig config = WithSolver("levenberg_marquardt");
+  PoseConfig config;
   config.rounds = 1;
   const PoseResult r =
       EstimatePose(scene.observations, Offset(scene.T_camera_world, 0.05, 0.05), camera, config);
@@ -130,10 +125,11 @@ TEST(PoseSolver, IterationLimitMatchesCeres) {
   const Eigen::Isometry3d start = Offset(scene.T_camera_world, 0.05, 0.05);
   for (int max_iterations = 1; max_iterations <= 3; ++max_iterations) {
     SCOPED_TRACE("max_iterations " + std::to_string(max_iterations));
-    PoseConfig lm_config = WithSolver("levenberg_marquardt"), ceres_config = WithSolver("ceres");
-    lm_config.max_iterations = ceres_config.max_iterations = max_iterations;
-    const PoseResult lm = EstimatePose(scene.observations, start, camera, lm_config);
-    const PoseResult ceres = EstimatePose(scene.observations, start, camera, ceres_config);
+    PoseConfig config;
+    config.max_iterations = max_iterations;
+    const PoseResult lm = EstimatePose(scene.observations, start, camera, config);
+    const PoseResult ceres =
+        EstimatePose(scene.observations, start, camera, config, nullptr, PoseSolver::kCeres);
     EXPECT_EQ(lm.success, ceres.success);
     EXPECT_EQ(lm.iterations, ceres.iterations);
     EXPECT_EQ(lm.num_inliers, ceres.num_inliers);
@@ -149,10 +145,9 @@ TEST(PoseSolver, RobustPoseMatchesCeres) {
   for (unsigned seed = 1; seed <= 3; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const test::PoseScene scene = test::MakePoseScene(camera, 300, 0.4, 200 + seed, 5);
-    const PoseResult lm =
-        EstimatePoseRobust(scene.observations, camera, WithSolver("levenberg_marquardt"), seed);
+    const PoseResult lm = EstimatePoseRobust(scene.observations, camera, PoseConfig(), seed);
     const PoseResult ceres =
-        EstimatePoseRobust(scene.observations, camera, WithSolver("ceres"), seed);
+        EstimatePoseRobust(scene.observations, camera, PoseConfig(), seed, PoseSolver::kCeres);
     ExpectSameSolution(lm, ceres);
     EXPECT_LT(TranslationError(lm.T_camera_world, scene.T_camera_world), 0.005);
   }

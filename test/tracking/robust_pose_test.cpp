@@ -16,7 +16,7 @@ TEST(RobustPose, RansacFindsPoseWithSixtyPercentOutliers) {
   EXPECT_LT((ransac.T_camera_world.translation() - scene.T_camera_world.translation()).norm(),
             0.02);
   EXPECT_LT(test::RotationErrorDeg(ransac.T_camera_world, scene.T_camera_world), 1.0);
-  EXPECT_LE(ransac.hypotheses, PoseConfig().ransac_max_iterations);
+  EXPECT_LE(ransac.hypotheses, kRansacMaxHypotheses);
 
   const PoseResult refined = EstimatePoseRobust(scene.observations, camera, PoseConfig(), 5);
   ASSERT_TRUE(refined.success);

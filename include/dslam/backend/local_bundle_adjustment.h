@@ -3,14 +3,14 @@
 // positions of the verified static points they measure, from every RGB-D measurement of those
 // points in those keyframes (paper Eq. rgbd_yik: y_ik = R_k p_i + t_k + n, n ~ N(0, C_ik)).
 //
-// Only verified static points (marked, not candidates) measured in at least
-// `ba_min_point_keyframes` keyframes enter. The oldest `ba_fixed_keyframes` keyframes, and
-// keyframes with fewer than `ba_min_keyframe_points` such points, keep their poses. Two rounds, as
-// in ORB-SLAM2's LocalBundleAdjustment: Huber-robust Levenberg-Marquardt, then the measurements
-// whose squared Mahalanobis error exceeds `ba_chi2` are left out and the rest are optimised
-// again. Measurements stay in their keyframes: static point determination compares them.
-// Points measured in the window but not optimised move with the newest keyframe that measured
-// them.
+// Only verified static points (marked, not candidates) measured in at least 2 keyframes enter.
+// The oldest `backend.ba_fixed_keyframes` keyframes, and keyframes with fewer than 10 such points,
+// keep their poses. Two rounds of at most 10 iterations, as in ORB-SLAM2's LocalBundleAdjustment:
+// Levenberg-Marquardt robust by the Huber width `pose.huber_delta_depth` (the motion-only BA's),
+// then the measurements whose squared Mahalanobis error exceeds `pose.chi2_depth` are left out and
+// the rest are optimised again. Fewer than 2 window keyframes: nothing runs. Measurements stay in
+// their keyframes: static point determination compares them. Points measured in the window but not
+// optimised move with the newest keyframe that measured them.
 //
 // Safeguards against points that are marked but move (a person who stood still long enough to
 // be verified): measurements inconsistent with the front end's poses and map (chi-square with
@@ -19,7 +19,7 @@
 // front end's pose information) or than `ba_max_correction_m` / `ba_max_correction_deg` is not
 // applied: with a person filling most of the window, the window could follow the person.
 
-#include "dslam/core/backend_config.h"
+#include "dslam/core/config.h"
 #include "dslam/tracking/map.h"
 
 namespace dslam {
@@ -28,7 +28,7 @@ namespace dslam {
 struct LocalBaStats {
   bool ran = false;  ///< false: too few keyframes or points (nothing changed)
   /// [-] window keyframes after the oldest `ba_fixed_keyframes`: free, except those that
-  /// measure fewer than `ba_min_keyframe_points` optimised points (also held fixed)
+  /// measure fewer than 10 optimised points (also held fixed)
   int keyframes = 0;
   /// [-] `ba_fixed_keyframes`, the oldest window keyframes held fixed (keyframes held for too
   /// few points are counted in `keyframes`, not here)
@@ -48,7 +48,8 @@ struct LocalBaStats {
 };
 
 /// Optimises the keyframe window of `map` in place (keyframe poses, their measurements' poses and
-/// point positions); see the top of this file. Deterministic (one solver thread).
-LocalBaStats LocalBundleAdjustment(const BackendConfig& config, Map* map);
+/// point positions) with config.backend and config.pose's 3-dof widths; see the top of this file.
+/// Deterministic (one solver thread).
+LocalBaStats LocalBundleAdjustment(const Config& config, Map* map);
 
 }  // namespace dslam

@@ -23,7 +23,7 @@ class LocalMappingJob {
   /// and mark. `generation` identifies the map it came from (Slam's reset counter).
   LocalMappingJob(const Map& map, uint64_t generation);
 
-  /// Static point determination (when config.backend.spd_enabled and static points are on),
+  /// Static point determination (when static points are on),
   /// then local BA, on the copy. Fills status() but for window_keyframes.
   void Run(const Config& config);
 

@@ -12,17 +12,9 @@ namespace dslam {
 /// Fields() (printed by `dslam_config_doc`).
 struct BackendConfig {
   bool enabled = false;
-  bool spd_enabled = true;
-  int spd_min_covisible_points = 20;
   bool spd_unmark_isolated = false;
   double spd_rotation_sigma_deg = 0.3;
   int ba_fixed_keyframes = 3;
-  int ba_min_keyframes = 2;
-  int ba_min_point_keyframes = 2;
-  int ba_min_keyframe_points = 10;
-  int ba_max_iterations = 10;
-  double ba_huber_delta = 2.796;
-  double ba_chi2 = 7.815;
   double ba_max_correction_chi2 = 16.81;
   double ba_max_correction_m = 0.05;
   double ba_max_correction_deg = 2.0;
@@ -34,12 +26,10 @@ struct BackendConfig {
     // and close_person but costs slow_box and Bonn (BENCHMARKS.md, "Marked points followed from
     // their last measurement").
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
-    // Algorithm 1 (window_static_points.h) runs before local BA, which then uses the points that
-    // stayed marked. Needs static_points.enabled.
-    v(Flag("spd_enabled", "back-end static point determination over the window"), s.spd_enabled);
-    v(Field("spd_min_covisible_points", "-", 1, 100000,
-            "window keyframes sharing fewer measured points with the new keyframe are left out"),
-      s.spd_min_covisible_points);
+    // Algorithm 1 (window_static_points.h) runs before local BA (with static_points.enabled),
+    // which then uses the points that stayed marked. Window keyframes sharing fewer than 20
+    // measured points with the new keyframe are left out (kMinCovisiblePoints,
+    // window_static_points.cpp).
     // The paper unmarks every point outside the largest-volume component, isolated points (all
     // their edges inconsistent) included. Off by default: in static scenes these are mostly
     // points with a bad measurement, not movers (`git show 0da3eda:BENCHMARKS.md`, section
@@ -57,25 +47,11 @@ struct BackendConfig {
             "rotation uncertainty of a window keyframe in the edge tests"),
       s.spd_rotation_sigma_deg);
     // The oldest keyframes of the window keep their poses: they fix the gauge (world frame) and
-    // tie the window to the trajectory already estimated.
+    // tie the window to the trajectory already estimated. Local BA's other rules are constants of
+    // local_bundle_adjustment.cpp; its Huber width and chi-square bound are pose.huber_delta_depth
+    // and pose.chi2_depth (the same whitened 3-dof residual as the motion-only BA's).
     v(Field("ba_fixed_keyframes", "-", 1, 100, "oldest window keyframes held fixed in local BA"),
       s.ba_fixed_keyframes);
-    v(Field("ba_min_keyframes", "-", 2, 100, "fewer window keyframes: no local BA"),
-      s.ba_min_keyframes);
-    v(Field("ba_min_point_keyframes", "-", 2, 100,
-            "points measured in fewer window keyframes are not optimised"),
-      s.ba_min_point_keyframes);
-    v(Field("ba_min_keyframe_points", "-", 3, 100000,
-            "keyframes with fewer optimised points keep their pose"),
-      s.ba_min_keyframe_points);
-    // Levenberg-Marquardt iterations; a second round runs without the outliers of the first.
-    v(Field("ba_max_iterations", "-", 1, 1000, "solver iterations per local BA round"),
-      s.ba_max_iterations);
-    v(Field("ba_huber_delta", "-", 0.1, 100.0, "Huber width, whitened 3-dof residual"),
-      s.ba_huber_delta);
-    // 95% quantile of chi-square with 3 dof.
-    v(Field("ba_chi2", "-", 0.1, 1000.0, "observations above this squared error are dropped"),
-      s.ba_chi2);
     // 99% quantile of chi-square with 6 dof: the back end may refine a keyframe within what its
     // own frame's measurements allow, not drag it away (e.g. towards a person in the window).
     v(Field("ba_max_correction_chi2", "-", 0.0, 1e9,

@@ -41,7 +41,7 @@ struct DepthMixture {
 /// `depth_m` (CV_32FC1, metres, 0 = none) with kernel W = 1/16 [1 2 1; 2 4 2; 1 2 1]. Each
 /// component is N(d_q, sigma_d(d_q)^2). Invalid neighbours (0, NaN, outside the image or outside
 /// [min_depth_m, max_depth_m]) are dropped and the remaining weights renormalised to sum 1.
-/// Returns nothing when the centre is invalid or fewer than `min_valid_window_pixels` of the nine
+/// Returns nothing when the centre is invalid or fewer than 5 of the nine
 /// window pixels (centre included) are valid.
 std::optional<DepthMixture> MixDepth(const cv::Mat& depth_m, int col, int row,
                                      const DepthNoiseConfig& config);

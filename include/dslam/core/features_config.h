@@ -3,8 +3,6 @@
 // estimation. Members of the one Config tree (config.h); kept in their own header so that the
 // feature, depth-uncertainty and pose modules can include them without the whole tree.
 
-#include <string>
-
 #include "dslam/core/config_field.h"
 
 namespace dslam {
@@ -18,7 +16,6 @@ struct DepthNoiseConfig {
   double sigma_d_constant_m = 1.0e-3;
   double min_depth_m = 0.3;
   double max_depth_m = 6.0;
-  int min_valid_window_pixels = 5;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -32,9 +29,6 @@ struct DepthNoiseConfig {
     // Depths outside [min_depth_m, max_depth_m] count as no measurement.
     v(Field("min_depth_m", "m", 0.0, 100.0, "smallest valid depth"), s.min_depth_m);
     v(Field("max_depth_m", "m", 0.0, 100.0, "largest valid depth"), s.max_depth_m);
-    // The 3x3 window includes its centre pixel.
-    v(Field("min_valid_window_pixels", "-", 1, 9, "valid depths needed of the 3x3 window"),
-      s.min_valid_window_pixels);
   }
 };
 
@@ -46,7 +40,6 @@ struct FeaturesConfig {
   double scale_factor = 1.2;
   int fast_threshold = 20;
   int fast_threshold_min = 7;
-  int cell_size_px = 30;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -58,32 +51,22 @@ struct FeaturesConfig {
     // Used in grid cells where fast_threshold found nothing.
     v(Field("fast_threshold_min", "-", 1, 255, "fallback FAST threshold for weak cells"),
       s.fast_threshold_min);
-    v(Field("cell_size_px", "px", 10, 200, "detection grid cell side at every level"),
-      s.cell_size_px);
   }
 };
 
-/// Motion-only bundle adjustment (pose_optimizer.h) and its RANSAC initialisation. Units, ranges
+/// Motion-only bundle adjustment (pose_optimizer.h, solved by the hand-written Levenberg-Marquardt
+/// of pose_solver_lm.cpp) and its RANSAC initialisation (robust_pose.h). Units, ranges
 /// and meanings of the fields are given in Fields() (printed by `dslam_config_doc`).
 struct PoseConfig {
-  std::string solver = "levenberg_marquardt";
   double huber_delta_depth = 2.796;
   double huber_delta_pixel = 2.448;
   double chi2_depth = 7.815;
   double chi2_pixel = 5.991;
   int rounds = 4;
   int max_iterations = 10;
-  int ransac_max_iterations = 300;
-  double ransac_confidence = 0.999;
-  double ransac_extra_sigma_m = 0.01;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    // levenberg_marquardt: the 6-dof solver of pose_optimizer.cpp (6x6 normal equations, Huber
-    // by iteratively reweighted least squares); ceres: the same cost solved by Ceres.
-    v(Choice("solver", {"levenberg_marquardt", "ceres"},
-             "motion-only BA solver: levenberg_marquardt or ceres"),
-      s.solver);
     v(Field("huber_delta_depth", "-", 0.1, 100.0, "Huber width, whitened 3-dof residual"),
       s.huber_delta_depth);
     v(Field("huber_delta_pixel", "-", 0.1, 100.0, "Huber width, whitened 2-dof residual"),
@@ -94,13 +77,6 @@ struct PoseConfig {
     v(Field("rounds", "-", 1, 20, "optimise/classify rounds"), s.rounds);
     // Levenberg-Marquardt iterations.
     v(Field("max_iterations", "-", 1, 1000, "solver iterations per round"), s.max_iterations);
-    v(Field("ransac_max_iterations", "-", 1, 100000, "RANSAC hypotheses at most"),
-      s.ransac_max_iterations);
-    v(Field("ransac_confidence", "-", 0.5, 0.999999, "RANSAC stopping confidence"),
-      s.ransac_confidence);
-    // Isotropic sigma added to the covariance C for the RANSAC inlier test.
-    v(Field("ransac_extra_sigma_m", "m", 0.0, 1.0, "sigma added to C in RANSAC tests"),
-      s.ransac_extra_sigma_m);
   }
 };
 

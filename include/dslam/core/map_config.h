@@ -14,13 +14,11 @@ struct MapConfig {
   double voxel_size_m = 0.05;
   double extent_m = 10.0;
   int pixel_step = 4;
-  double max_depth_m = 6.0;
   bool dynamic_masks = true;
   bool free_space_check = true;
   int free_space_keyframes = 30;
   double free_space_margin_m = 0.05;
   double free_space_margin_ratio = 0.02;
-  int free_space_min_misses = 1;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -36,18 +34,13 @@ struct MapConfig {
       s.extent_m);
     v(Field("pixel_step", "px", 1, 64, "keyframe depth is sampled every pixel_step pixels"),
       s.pixel_step);
-    // The depth model's range (depth_noise.max_depth_m); at 4 m the synthetic rooms' far walls
-    // were missing from the map (docs/how-it-works.md, Static map).
-    v(Field("max_depth_m", "m", 0.1, 100.0,
-            "depths beyond are not fused, points beyond a keyframe's depth range get no vote"),
-      s.max_depth_m);
     // Off: every pixel with depth is fused (the static-world baseline, with free_space_check off).
     // The mask grows from the keyframe's unmarked points (section dynamic_mask).
     v(Flag("dynamic_masks", "leave out the pixels of moving objects (dynamic_mask.h)"),
       s.dynamic_masks);
     // A point is transient when keyframes see through it (their depth along its ray is beyond it
-    // by the margin) at least free_space_min_misses times and at least as often as keyframes saw
-    // a surface there (free_space.h).
+    // by the margin) at least once and at least as often as keyframes saw a surface there
+    // (free_space.h).
     v(Flag("free_space_check", "remove points other keyframes see through"), s.free_space_check);
     // Also the reach in time of the check: keyframes farther apart than this never vote on each
     // other's points (their drift would make static surfaces look seen through).
@@ -60,9 +53,6 @@ struct MapConfig {
       s.free_space_margin_m);
     v(Field("free_space_margin_ratio", "-", 0.0, 1.0, "the margin's share of the depth"),
       s.free_space_margin_ratio);
-    v(Field("free_space_min_misses", "-", 1, 1000,
-            "keyframes that must see through a point before it is removed"),
-      s.free_space_min_misses);
   }
 };
 

@@ -19,13 +19,11 @@ struct DynamicMaskConfig {
   double depth_step_ratio = 0.02;
   double margin_m = 0.25;
   double max_depth_m = 6.0;
-  bool depth_change_seeds = true;
   double depth_change_interval_s = 0.2;
   int depth_change_references = 3;
   double depth_change_margin_m = 0.1;
   double depth_change_sigma_factor = 3.0;
   int depth_change_min_cells = 40;
-  int depth_change_stride = 2;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -56,9 +54,7 @@ struct DynamicMaskConfig {
     // sigma_d(depth), sigma_d of depth_noise) mark something that was not there then; connected
     // groups of at least depth_change_min_cells such cells grow regions like the points' clusters.
     // Reference frames: one every depth_change_interval_s, the newest depth_change_references kept.
-    v(Flag("depth_change_seeds",
-           "also seed regions where the depth came nearer than recent frames"),
-      s.depth_change_seeds);
+    // The cells on every 2nd row and column are tested (kDepthChangeStride, depth_change.h).
     v(Field("depth_change_interval_s", "s", 0.01, 10.0, "time between two reference frames"),
       s.depth_change_interval_s);
     v(Field("depth_change_references", "-", 1, 20, "reference frames kept (newest)"),
@@ -72,10 +68,6 @@ struct DynamicMaskConfig {
     v(Field("depth_change_min_cells", "-", 1, 100000,
             "connected changed cells a depth-change seed needs"),
       s.depth_change_min_cells);
-    // Only the cells on every depth_change_stride-th row and column are tested (each stands for
-    // stride x stride cells in depth_change_min_cells); the growth fills the cells between.
-    v(Field("depth_change_stride", "cells", 1, 8, "spacing of the cells tested for depth change"),
-      s.depth_change_stride);
   }
 };
 
@@ -86,19 +78,16 @@ struct DynamicMaskConfig {
 struct ObjectsConfig {
   bool enabled = true;
   int min_points = 6;
-  int min_cells = 20;
   int track_min_points = 4;
   double gate_m = 0.6;
   double colour_weight_m = 0.3;
   double acceleration_sigma_mps2 = 3.0;
   double position_sigma_m = 0.08;
   double velocity_sigma_mps = 0.3;
-  int min_velocity_points = 3;
   double velocity_baseline_s = 0.034;
   double motion_baseline_s = 0.25;
   double max_point_speed_mps = 4.0;
   double split_speed_mps = 0.5;
-  int split_min_points = 5;
   double split_max_overlap = 0.5;
   double split_min_distance_m = 0.4;
   int min_hits = 2;
@@ -107,20 +96,12 @@ struct ObjectsConfig {
   double coast_s = 0.2;
   double max_unseen_s = 1.0;
   double maneuver_chi2 = 12.59;
-  bool carry_points = true;
-  bool join_stacked_regions = true;
-  int carry_window_px = 11;
-  int carry_levels = 3;
-  double carry_max_error_px = 0.5;
-  int carry_max_points = 500;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
     v(Flag("enabled", "detect and track moving objects"), s.enabled);
     v(Field("min_points", "-", 1, 10000, "unmarked points a region needs to become an observation"),
       s.min_points);
-    v(Field("min_cells", "-", 1, 1000000, "mask cells a region needs to become an observation"),
-      s.min_cells);
     // Where a tracked object is expected (its predicted position within gate_m), fewer unmarked
     // points suffice, both for a cluster (instead of dynamic_mask.min_cluster_points) and for an
     // observation (instead of min_points): the front end labels few points of a person at times.
@@ -139,11 +120,9 @@ struct ObjectsConfig {
       s.position_sigma_m);
     // An object's velocity is also measured directly: the per-axis median of its unmarked
     // points' displacements since the previous frame (the same point ids, re-measured in each
-    // frame), when at least min_velocity_points points were seen in both.
+    // frame), when at least 3 points were seen in both.
     v(Field("velocity_sigma_mps", "m/s", 0.001, 100.0, "noise of an observed point velocity"),
       s.velocity_sigma_mps);
-    v(Field("min_velocity_points", "-", 1, 10000, "points an observed velocity needs"),
-      s.min_velocity_points);
     // A walker turns or stops within a step, faster than the filter's acceleration noise
     // follows: when the normalised innovations of a track's last two observed point velocities
     // add up to more than maneuver_chi2 (chi-square, 6 dof; 12.59: 5 % of consistent pairs), the
@@ -162,35 +141,32 @@ struct ObjectsConfig {
     v(Field("motion_baseline_s", "s", 0.001, 2.0, "baseline of the point speed for min_speed_mps"),
       s.motion_baseline_s);
     // A faster point was matched to another thing's feature, e.g. a point of a person who left
-    // re-matched on the wall behind: left out of the median.
+    // re-matched on the wall behind: left out of the median. The same bound drops points carried
+    // by optical flow (the points the front end lost, dslam/mapping/point_carrier.h).
     v(Field("max_point_speed_mps", "m/s", 0.01, 1000.0, "faster point velocities are outliers"),
       s.max_point_speed_mps);
     // A region whose points' velocities (over motion_baseline_s) form two groups (two-means)
     // whose per-axis medians differ by at least split_speed_mps, each group with at least
-    // split_min_points points, is split in two (dslam/mapping/region_split.h): two people that
+    // 5 points (kSplitMinPoints), is split in two (dslam/mapping/region_split.h): two people that
     // came close enough to be one cluster. A large split_speed_mps (e.g. 100) never splits.
     v(Field("split_speed_mps", "m/s", 0.01, 1000.0,
             "velocity difference of two groups of a region's points that splits it"),
       s.split_speed_mps);
-    v(Field("split_min_points", "-", 1, 10000, "points with a velocity each split part needs"),
-      s.split_min_points);
     // The two parts the region's cells are shared into must also stand side by side in the
     // image: the overlap of their horizontal ranges (10th-90th percentile of the optical x of
     // their cells) at most this share of the narrower range.
     v(Field("split_max_overlap", "-", 0.0, 1.0,
             "largest horizontal overlap of two split parts (share of the narrower)"),
       s.split_max_overlap);
+    // split_max_overlap also joins regions: regions one above the other in the image (column
+    // ranges overlapping by more than it) whose world boxes come within dynamic_mask.margin_m are
+    // the parts of one person whose seed points left a gap (dslam/mapping/region_join.h).
     // ... and their mean positions across the view (optical x and depth) at least
     // split_min_distance_m apart (two people side by side are a body's width apart; two halves
     // of one near person are not).
     v(Field("split_min_distance_m", "m", 0.0, 10.0,
             "smallest distance of the mean positions of two split parts across the view"),
       s.split_min_distance_m);
-    // Regions one above the other in the image (column ranges overlapping by more than
-    // split_max_overlap) whose world boxes come within dynamic_mask.margin_m are joined: the
-    // parts of one person whose seed points left a gap (dslam/mapping/region_join.h).
-    v(Flag("join_stacked_regions", "join regions that are parts of one thing, one above the other"),
-      s.join_stacked_regions);
     // A track is reported once min_hits consecutive observations had a point velocity of at
     // least min_speed_mps: static surfaces mislabelled for a while are not objects. A walker that
     // stops stays reported (it moved before).
@@ -209,21 +185,6 @@ struct ObjectsConfig {
       s.coast_s);
     v(Field("max_unseen_s", "s", 0.0, 60.0, "a track unseen for longer is dropped"),
       s.max_unseen_s);
-    // The points of the moving things that the front end's matching lost between two frames are
-    // carried by optical flow (dslam/mapping/point_carrier.h), for the objects only: pyramidal
-    // Lucas-Kanade on the half-resolution grey image with a carry_window_px square window (at
-    // that resolution) on carry_levels levels, kept when the backward flow returns within
-    // carry_max_error_px (full resolution) of the start; at most carry_max_points per frame
-    // (evenly spread over the lost points: bounds the time per frame).
-    v(Flag("carry_points", "carry lost points of moving things by optical flow"), s.carry_points);
-    v(Field("carry_window_px", "px", 5, 101, "optical flow window side (half resolution)"),
-      s.carry_window_px);
-    v(Field("carry_levels", "-", 1, 8, "optical flow pyramid levels"), s.carry_levels);
-    v(Field("carry_max_error_px", "px", 0.01, 100.0,
-            "largest forward-backward flow error of a carried point"),
-      s.carry_max_error_px);
-    v(Field("carry_max_points", "-", 1, 1000000, "most points carried per frame"),
-      s.carry_max_points);
   }
 };
 

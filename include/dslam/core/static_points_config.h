@@ -14,27 +14,22 @@ namespace dslam {
 struct StaticPointsConfig {
   bool enabled = true;
   std::string method = "direct";
-  int max_rounds = 4;
   double chi2_threshold = 11.34;
   double direct_probability = 0.99;
-  double prior_sigma_m = 1.0;
   double min_inlier_fraction = 1.0;
   int min_edge_measurements = 2;
-  int min_graph_points = 8;
   int max_graph_points = 0;
-  int min_component_points = 4;
   int min_static_points = 10;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
     v(Flag("enabled", "static point determination on; off = static-world baseline"), s.enabled);
-    // least_squares: rounds of linear least squares of J_p + one-way chi-square culling; direct:
-    // per-edge consistency test of the world-frame measurements, no optimisation.
+    // least_squares: rounds of linear least squares of J_p + one-way chi-square culling (at most
+    // 4 rounds, a prior of 1 m per coordinate: CullingOptions' defaults); direct: per-edge
+    // consistency test of the world-frame measurements, no optimisation.
     v(Choice("method", {"least_squares", "direct"},
              "edge test: least_squares (culling rounds) or direct"),
       s.method);
-    // The rounds stop early when nothing changes.
-    v(Field("max_rounds", "-", 1, 50, "solve + cull rounds (least_squares)"), s.max_rounds);
     v(Field("chi2_threshold", "-", 0.1, 1000.0,
             "3-dof squared Mahalanobis outlier threshold (7.81: 95%, 11.34: 99%)"),
       s.chi2_threshold);
@@ -42,9 +37,6 @@ struct StaticPointsConfig {
     v(Field("direct_probability", "-", 0.5, 0.999999,
             "chi-square quantile probability of the direct edge test"),
       s.direct_probability);
-    // The weak prior anchors each point to its initial estimate.
-    v(Field("prior_sigma_m", "m", 1e-3, 1e6, "sigma of the prior anchoring each point"),
-      s.prior_sigma_m);
     v(Field("min_inlier_fraction", "-", 0.0, 1.0,
             "an edge with a smaller share of inlier measurements is inconsistent"),
       s.min_inlier_fraction);
@@ -53,10 +45,6 @@ struct StaticPointsConfig {
     v(Field("min_edge_measurements", "-", 0, 1000,
             "edges measured in fewer frames are untested and connect nothing"),
       s.min_edge_measurements);
-    // Fewer than 4 points span no tetrahedron (3D Delaunay cell): hence the lower bound.
-    v(Field("min_graph_points", "-", 4, 1000000,
-            "fewer matched points with depth: the front end skips static point determination"),
-      s.min_graph_points);
     // The Delaunay graph's cost grows faster than linearly with its points; above this count
     // the front end builds it over a subset (every unsettled point, verified static points spread
     // evenly over the image), and the points left out take the static/dynamic label of their
@@ -65,9 +53,7 @@ struct StaticPointsConfig {
     v(Field("max_graph_points", "-", 0, 1000000,
             "front end: graph points at most (0: no cap); the rest take a neighbour's label"),
       s.max_graph_points);
-    v(Field("min_component_points", "-", 1, 1000000,
-            "smaller components are never chosen as static"),
-      s.min_component_points);
+    // Components of fewer than 4 points never compete (StaticSelectionOptions' default).
     v(Field("min_static_points", "-", 1, 1000000,
             "largest-volume component smaller than this: no static decision"),
       s.min_static_points);

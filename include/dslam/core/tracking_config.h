@@ -15,12 +15,8 @@ struct TrackingConfig {
   double search_radius_px = 10.0;
   bool follow_last_measurement = true;
   double wide_search_radius_px = 30.0;
-  double unmarked_search_radius_px = 10.0;
-  double unmarked_max_offset_m = 0.0;
-  double search_min_depth_m = 0.1;
   int min_matches = 40;
   int min_static_inliers = 20;
-  int init_min_points_factor = 2;
   std::string front_end_reference = "keyframes";
   int front_end_keyframes = 6;
   int front_end_min_age_frames = 5;
@@ -29,21 +25,16 @@ struct TrackingConfig {
   double keyframe_min_tracked_ratio = 0.7;
   int keyframe_min_static = 150;
   int max_new_points = 400;
-  int descriptor_observations = 1;
   bool fuse_static_points = false;
   double dynamic_neighbour_radius_px = 40.0;
   double cull_min_found_ratio = 0.25;
-  int cull_min_visible = 8;
   int keep_static_frames = 90;
   int verify_frames = 6;
   int isolated_frames_to_unmark = 3;
   int remark_frames = 15;
   int lost_frames_before_reset = 10;
   double max_prediction_gap_s = 1.0;
-  std::string robust_pose_points = "marked_first";
   bool relocalisation = true;
-  int relocalisation_max_distance_bits = 64;
-  double relocalisation_ratio = 0.8;
   double relocalisation_min_inlier_share = 0.5;
 
   /// Visits every field in documentation order.
@@ -74,28 +65,10 @@ struct TrackingConfig {
     v(Field("wide_search_radius_px", "px", 1.0, 400.0,
             "search radius when the narrow search finds too few matches"),
       s.wide_search_radius_px);
-    // Unmarked points move on their own, which the camera's predicted pose does not include
-    // (MatchLocalMap, local_map_matching.h).
-    v(Field("unmarked_search_radius_px", "px", 1.0, 400.0,
-            "projection search radius (octave 0) of unmarked points; at least the marked one's"),
-      s.unmarked_search_radius_px);
-    v(Field("unmarked_max_offset_m", "m", 0.0, 100.0,
-            "an unmarked point matches only features measured this near its last position, "
-            "moved with the camera (0: no test)"),
-      s.unmarked_max_offset_m);
-    // The near plane of MatchLocalMap (local_map_matching.h); the bound keeps points off z = 0.
-    v(Field("search_min_depth_m", "m", 0.001, 100.0,
-            "map points nearer than this along the optical axis are not projected or searched"),
-      s.search_min_depth_m);
     v(Field("min_matches", "-", 3, 10000, "fewer narrow matches: search wide"), s.min_matches);
     v(Field("min_static_inliers", "-", 3, 10000,
             "fewer static pose inliers: fall back to a robust pose / lost"),
       s.min_static_inliers);
-    // A factor rather than a count so that initialisation keeps following min_static_inliers
-    // (Odometry::Initialise, odometry.cpp).
-    v(Field("init_min_points_factor", "-", 1, 1000,
-            "features with depth needed to (re-)initialise, as a multiple of min_static_inliers"),
-      s.init_min_points_factor);
   }
 
   // Front-end reference frames and the keyframe policy.
@@ -127,13 +100,6 @@ struct TrackingConfig {
   template <typename Self, typename Visitor>
   static void PointFields(Self& s, Visitor& v) {
     v(Field("max_new_points", "-", 0, 100000, "map points created per keyframe"), s.max_new_points);
-    // A point seen from many viewpoints can be matched with the descriptor most like its others
-    // (RefineDescriptor, map.h) instead of the one it was created with. Off by default: with 8,
-    // Bonn crowd ATE 0.054 -> 0.237 m, walking_halfsphere +31 % (BENCHMARKS.md).
-    v(Field("descriptor_observations", "-", 1, 1000,
-            "keyframe descriptors a map point keeps to choose its descriptor from (1: the "
-            "creating one only)"),
-      s.descriptor_observations);
     // The fusion is an information-weighted mean (the paper refines marked points by bundle
     // adjustment). Off by default: on Bonn crowd it raised ATE from 0.10 to 0.24 m (people that
     // stood still, were verified and fused, then walked off), on synthetic walking it gained 3 mm.
@@ -143,10 +109,9 @@ struct TrackingConfig {
     v(Field("dynamic_neighbour_radius_px", "px", 0.0, 1000.0,
             "new points start unmarked when most tracked neighbours within this are dynamic"),
       s.dynamic_neighbour_radius_px);
+    // Checked once a point was visible in 8 frames (kCullMinVisible, odometry_steps.cpp).
     v(Field("cull_min_found_ratio", "-", 0.0, 1.0, "found/visible ratio below this: cull"),
       s.cull_min_found_ratio);
-    v(Field("cull_min_visible", "-", 1, 100000, "sightings before the ratio is checked"),
-      s.cull_min_visible);
     // E.g. points hidden by a person standing in front of the camera are found again when the
     // view clears. 0: only window points.
     v(Field("keep_static_frames", "frames", 0, 100000,
@@ -177,23 +142,12 @@ struct TrackingConfig {
             "longest time since the last tracked frame over which the motion model extrapolates; "
             "longer: last pose and wide search"),
       s.max_prediction_gap_s);
-    // The RANSAC fallback when static points give too few inliers: "marked" lets only points not
-    // known to move decide the pose (a crowd filling the view cannot win the vote); "all" samples
-    // every match; "marked_first" tries the marked points, then all (measured in BENCHMARKS.md).
-    v(Choice("robust_pose_points", {"all", "marked", "marked_first"},
-             "matches the RANSAC pose fallback samples: all, marked only, or marked then all"),
-      s.robust_pose_points);
-    // When the pose prediction fails (relocalisation.h): no prediction needed, marked points only.
+    // When the pose prediction fails (relocalisation.h): no prediction needed, marked points only;
+    // descriptor matches by DescriptorMatchRules' defaults.
     v(Flag("relocalisation",
            "when tracking fails, match the frame by descriptor against the window's marked "
            "points and take a RANSAC pose from them"),
       s.relocalisation);
-    v(Field("relocalisation_max_distance_bits", "bits", 1, 256,
-            "a relocalisation descriptor match must be nearer than this (Hamming, of 256)"),
-      s.relocalisation_max_distance_bits);
-    v(Field("relocalisation_ratio", "-", 0.01, 1.0,
-            "and nearer than this x the second nearest descriptor"),
-      s.relocalisation_ratio);
     // Measured (BENCHMARKS.md): true relocalisations after dropped frames 0.94-0.95; poses of
     // people not yet unmarked on Bonn crowd 0.27, on walking_halfsphere 0.39.
     v(Field("relocalisation_min_inlier_share", "-", 0.0, 1.0,

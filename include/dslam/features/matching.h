@@ -23,10 +23,6 @@ struct ProjectedPoint {
   int predicted_octave = -1;  ///< expected pyramid level from the point's distance; -1 = unknown
   /// [px] this point's search radius at octave 0; 0 = ProjectionSearchOptions::radius_px.
   double radius_px = 0.0;
-  /// [m] when positive, a candidate whose depth measurement lies farther than this from
-  /// p_camera is skipped (candidates without depth are not).
-  double max_offset_m = 0.0;
-  Eigen::Vector3d p_camera = Eigen::Vector3d::Zero();  ///< [m] predicted position, camera frame
 };
 
 /// Options of SearchByProjection (defaults after ORB-SLAM2's TH_HIGH and ratio).
@@ -40,10 +36,9 @@ struct ProjectionSearchOptions {
 /// For every projected point, the index into frame.features of its match or -1. A candidate is a
 /// feature whose uv_ideal lies within the radius (r * octave_scale[predicted_octave] when the
 /// octave is predicted, else r; r is the point's radius_px when positive, else options.radius_px)
-/// and, with a predicted octave, whose octave is within octave_tolerance (and, with max_offset_m,
-/// whose depth measurement is near p_camera). The best candidate must pass max_distance and the
-/// ratio test. Each feature is matched at most once: when several points pick the same feature,
-/// the one with the smallest distance keeps it and the others get -1.
+/// and, with a predicted octave, whose octave is within octave_tolerance. The best candidate must
+/// pass max_distance and the ratio test. Each feature is matched at most once: when several points
+/// pick the same feature, the one with the smallest distance keeps it and the others get -1.
 std::vector<int> SearchByProjection(const std::vector<ProjectedPoint>& points,
                                     const FrameFeatures& frame,
                                     const ProjectionSearchOptions& options = {});

@@ -17,7 +17,7 @@
 //
 // Cost per frame (tracking thread): adding a reference reads one pixel per block and erodes the
 // blocks (every depth_change_interval_s only; no pass over the full-size image); testing a frame
-// projects the valid, unlabelled, unblocked cells on every depth_change_stride-th row and column
+// projects the valid, unlabelled, unblocked cells on every kDepthChangeStride-th row and column
 // (at most 80 x 60 of the 160 x 120 cells at 640 x 480, decimation 4, stride 2) into each
 // reference until one sees through it (at most depth_change_references projections per cell).
 // Measured: median_objects_ms of the run summaries (mask and tracking per frame) of
@@ -38,6 +38,10 @@
 #include "dslam/mapping/free_space.h"
 
 namespace dslam {
+
+/// Only the cells on every kDepthChangeStride-th row and column are tested for depth change (each
+/// stands for stride x stride cells in depth_change_min_cells); the growth fills the cells between.
+constexpr int kDepthChangeStride = 2;
 
 /// Recent frames' depth with their poses: what was seen before, for the depth-change test.
 class DepthReference {

@@ -31,10 +31,11 @@ struct FreeSpaceTolerance {
   double margin_ratio = 0.0;  ///< [-] part of the margin proportional to the point's depth
   double min_depth_m = 0.0;   ///< [m] points nearer to the camera get no vote
   double max_depth_m = 1e9;   ///< [m] points farther from the camera get no vote
-  int min_misses = 1;         ///< [-] see-throughs needed to call a point transient
+  int min_misses = 1;         ///< [-] see-throughs needed to call a point transient (map: 1)
 
-  /// The tolerances of `config`, with the depth range [min_depth_m, config.max_depth_m].
-  static FreeSpaceTolerance From(const MapConfig& config, double min_depth_m);
+  /// The tolerances of `config`, with the depth range [min_depth_m, max_depth_m] [m] (the depth
+  /// model's, depth_noise) and min_misses 1.
+  static FreeSpaceTolerance From(const MapConfig& config, double min_depth_m, double max_depth_m);
   /// Whether a point with `misses` see-throughs and `hits` supports (its own keyframes
   /// included) is transient: misses >= min_misses and misses >= hits.
   bool Transient(int misses, int hits) const { return misses >= min_misses && misses >= hits; }

@@ -1,11 +1,10 @@
 #pragma once
 // The moving objects of each frame, from its FrameResult: the dynamic mask (dynamic_mask.h) of
-// the frame's unmarked points (and, with dynamic_mask.depth_change_seeds, the depth change against
-// recent frames: depth_change.h); the points of the previous frame's regions that the front end
-// lost, carried into its regions by optical flow (point_carrier.h, objects.carry_points); its
-// regions split where two things move differently (region_split.h) and joined where they are
-// parts of one thing (region_join.h, objects.join_stacked_regions); the regions as observations,
-// and the tracker (object_tracker.h).
+// the frame's unmarked points and the depth change against recent frames (depth_change.h); the
+// points of the previous frame's regions that the front end lost, carried into its regions by
+// optical flow (point_carrier.h); its regions split where two things move differently
+// (region_split.h) and joined where they are parts of one thing (region_join.h); the regions as
+// observations, and the tracker (object_tracker.h).
 // Runs after Slam::ProcessFrame on one thread, frame by frame in order: the objects' own thread
 // (OrderedWorker, in dslam_run_dataset --threads and the node with ~backend_threads) or the thread
 // that consumes FrameResults.
@@ -56,9 +55,9 @@ class MovingObjectTracker {
   ObjectTracker tracker_;
   DynamicMask mask_;
   std::deque<PointPositions> history_;  ///< recent frames' unmarked points, oldest first
-  /// Recent frames' depth for the depth-change seeds (DynamicMaskConfig::depth_change_seeds).
+  /// Recent frames' depth for the depth-change seeds.
   DepthReference reference_;
-  PointCarrier carrier_;  ///< lost points of the regions, by optical flow (carry_points)
+  PointCarrier carrier_;  ///< lost points of the regions, by optical flow
 };
 
 }  // namespace dslam

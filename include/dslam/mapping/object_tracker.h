@@ -30,8 +30,7 @@ struct ObjectObservation {
   int points = 0;                                    ///< unmarked points it holds
   /// [m/s] median (per axis) of its points' velocities, each from the point's oldest position
   /// in the recent frames (PointPositions history, at most ObjectsConfig::velocity_baseline_s old)
-  /// to this one, world frame; valid when has_velocity (at least ObjectsConfig::min_velocity_points
-  /// points).
+  /// to this one, world frame; valid when has_velocity (at least 3 points).
   Eigen::Vector3d velocity_world = Eigen::Vector3d::Zero();
   bool has_velocity = false;
   /// [m/s] speed of the same median over the longer ObjectsConfig::motion_baseline_s (whether
@@ -75,7 +74,7 @@ struct TrackedObject {
 };
 
 /// The observations of one frame stamped `stamp_s` [s]: the mask's regions with at least
-/// ObjectsConfig::min_points points and min_cells cells; their velocities from `history` (the
+/// ObjectsConfig::min_points points and 20 cells; their velocities from `history` (the
 /// recent frames' PositionsOf, oldest first; entries older than velocity_baseline_s are ignored).
 /// Regions whose centroid lies within gate_m of one of `near_world` [m, world frame] (predicted
 /// track positions) need only track_min_points points.

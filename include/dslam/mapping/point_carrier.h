@@ -7,14 +7,15 @@
 //
 // The points of the previous frame's regions that this frame's matching did not find are tracked
 // into this frame by pyramidal Lucas-Kanade optical flow on the grey images at half resolution
-// (forward, then backward to the previous image: the round trip must come back within
-// carry_max_error_px full-resolution pixels). A tracked point joins the region whose mask cell it
-// lands in, measured again from this frame's depth, under its own id, so its velocity and its
-// position history continue. It is dropped when it lands outside the mask (on the background:
-// the flow slid off the moving thing's silhouette), on a cell without valid depth, on a cell
-// that already holds a point (at most one point per cell: the points cannot pile up), or farther
-// from its previous position than ObjectsConfig::max_point_speed_mps allows in the time between
-// the frames (its depth now measured on another surface: at an occlusion border the flow
+// (an 11 px window at that resolution, 3 levels; forward, then backward to the previous image:
+// the round trip must come back within 0.5 full-resolution pixels), at most 500 per frame (evenly
+// spread over the lost points: bounds the time per frame). A tracked point joins the region whose
+// mask cell it lands in, measured again from this frame's depth, under its own id, so its velocity
+// and its position history continue. It is dropped when it lands outside the mask (on the
+// background: the flow slid off the moving thing's silhouette), on a cell without valid depth, on a
+// cell that already holds a point (at most one point per cell: the points cannot pile up), or
+// farther from its previous position than ObjectsConfig::max_point_speed_mps allows in the time
+// between the frames (its depth now measured on another surface: at an occlusion border the flow
 // follows the image, not the thing). The front end's pose and map never see these points.
 //
 // The work comes in two halves so that the flow, which needs no mask, can run beside the
@@ -45,13 +46,18 @@ struct CarriedFlow {
 /// at a time; Track may run beside the dynamic mask's computation).
 class PointCarrier {
  public:
-  /// Uses config.carry_window_px, carry_levels, carry_max_error_px, carry_max_points and
-  /// max_point_speed_mps, and max_depth_m of `mask_config` for the depth of a carried point.
+  static constexpr int kWindowPx = 11;        ///< [px] optical flow window side (half resolution)
+  static constexpr int kLevels = 3;           ///< optical flow pyramid levels
+  static constexpr double kMaxErrorPx = 0.5;  ///< [px] largest forward-backward error (full res.)
+  static constexpr int kMaxPoints = 500;      ///< most points carried per frame
+
+  /// Uses config.max_point_speed_mps, and max_depth_m of `mask_config` for the depth of a carried
+  /// point.
   PointCarrier(const ObjectsConfig& config, const DynamicMaskConfig& mask_config);
 
   /// First half: builds the pyramid of `frame` and tracks the previous frame's region points
-  /// that `points` (the frame's matched points) lacks, at most carry_max_points of them (evenly
-  /// spread), keeping those whose backward flow returns within carry_max_error_px. Reads the
+  /// that `points` (the frame's matched points) lacks, at most kMaxPoints of them (evenly
+  /// spread), keeping those whose backward flow returns within kMaxErrorPx. Reads the
   /// previous frame only; nothing when there is none or its image size differs.
   CarriedFlow Track(const RgbdFrame& frame, const std::vector<ObservedPoint>& points);
 

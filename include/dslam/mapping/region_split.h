@@ -11,13 +11,13 @@
 // 1. The velocity of each of its points over ObjectsConfig::motion_baseline_s (PointVelocity).
 // 2. Two-means of those velocities, started from the 10th and 90th percentiles along their
 //    principal axis.
-// 3. When both groups have at least ObjectsConfig::split_min_points points and their per-axis
+// 3. When both groups have at least kSplitMinPoints points and their per-axis
 //    median velocities differ by at least ObjectsConfig::split_speed_mps (the points of one rigid
 //    thing differ by noise only), the groups' per-axis median positions are the two centres.
 // 4. The region's cells are shared out by two-means of their points' positions across the view
 //    (optical x and depth, not the image's vertical), started from the two centres; every point
 //    goes with its cell (a point without a cell of the region: with the nearer part's mean).
-// 5. The split is kept when the two parts stand side by side: each holds split_min_points of the
+// 5. The split is kept when the two parts stand side by side: each holds kSplitMinPoints of the
 //    region's points, their cells' horizontal ranges (10th-90th percentile of optical x) overlap
 //    by at most ObjectsConfig::split_max_overlap of the narrower range, and their mean positions
 //    across the view are at least split_min_distance_m apart. A leg moving unlike the body above
@@ -46,6 +46,8 @@ namespace dslam {
 
 /// Most parts one region is split into.
 constexpr int kMaxSplitParts = 4;
+/// Points with a velocity each of the two groups and each split part needs.
+constexpr int kSplitMinPoints = 5;
 
 /// Splits the regions of `mask` (computed from `frame` at `T_world_camera` with `mask_config`)
 /// that hold two moving things: two of the `predicted` positions [m, world] of the tracks (at

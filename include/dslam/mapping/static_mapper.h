@@ -44,7 +44,8 @@ struct StaticMapStats {
 /// Fuses Slam's keyframes into a static map (see above).
 class StaticMapper : public KeyFrameObserver {
  public:
-  /// Uses config.map, config.dynamic_mask and config.depth_noise.min_depth_m. Throws ConfigError
+  /// Uses config.map, config.dynamic_mask and config.depth_noise's depth range (depths outside
+  /// are not fused and get no free-space vote). Throws ConfigError
   /// when `config` is invalid.
   explicit StaticMapper(const Config& config);
 
@@ -81,7 +82,8 @@ class StaticMapper : public KeyFrameObserver {
   const MapConfig config_;
   const DynamicMaskConfig mask_config_;
   const FreeSpaceTolerance tolerance_;
-  const double min_depth_m_;
+  const double min_depth_m_;  ///< [m] depth_noise.min_depth_m
+  const double max_depth_m_;  ///< [m] depth_noise.max_depth_m
   mutable std::mutex mutex_;  ///< guards everything below
   VoxelMap voxels_;
   std::deque<WindowKeyFrame> window_;  ///< oldest first

@@ -5,6 +5,7 @@
 // naming the parameter.
 
 #include <string>
+#include <vector>
 
 #include <xmlrpcpp/XmlRpcValue.h>
 
@@ -20,11 +21,15 @@ namespace ros_layer {
 
 /// Overrides `config` and `node` with the values of `tree` (the struct of a private parameter
 /// namespace). `ns` prefixes parameter names in error messages. Throws ConfigError naming the
-/// parameter on an unknown key, a wrong type or an out-of-range value; validates both.
+/// parameter on an unknown key, a wrong type or an out-of-range value; validates both. A core key
+/// dslam no longer has (removed_config_keys.h) is ignored: a warning naming it (e.g.
+/// "/dslam/tracking/descriptor_observations was removed (...); its value is ignored") is appended
+/// to `warnings`.
 void LoadParamTree(const XmlRpc::XmlRpcValue& tree, const std::string& ns, Config* config,
-                   NodeConfig* node);
+                   NodeConfig* node, std::vector<std::string>* warnings);
 
-/// LoadParamTree on the parameters under `private_nh`'s namespace (nothing set: defaults).
+/// LoadParamTree on the parameters under `private_nh`'s namespace (nothing set: defaults); the
+/// warnings about removed keys are logged with ROS_WARN.
 void LoadRosParams(const ros::NodeHandle& private_nh, Config* config, NodeConfig* node);
 
 }  // namespace ros_layer

@@ -16,6 +16,10 @@
 
 namespace dslam {
 
+/// With fewer matched points with depth (or window points) the front and back end skip static
+/// point determination: fewer than 4 points span no tetrahedron (3D Delaunay cell).
+constexpr int kMinGraphPoints = 8;
+
 /// Wall-clock time per step [ms] and counts of one DetermineStaticPoints call.
 struct StaticPointsStats {
   double graph_ms = 0.0;       ///< [ms] Delaunay triangulation

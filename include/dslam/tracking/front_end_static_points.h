@@ -40,7 +40,7 @@ struct FrontEndGraph {
   double graph_ms = 0.0;  ///< [ms] time to choose the points and build the graph
 };
 
-/// The graph over the usable matches (fewer than config.min_graph_points: no points, no edges);
+/// The graph over the usable matches (fewer than kMinGraphPoints: no points, no edges);
 /// with more than config.max_graph_points, over the subset described at
 /// DetermineStaticPointsFrontEnd.
 FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& matches,
@@ -49,7 +49,7 @@ FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& 
 /// Builds the problem over the matched points with a depth measurement in the current
 /// frame (pose `T_camera_world`) and their measurements in `reference_frames` (keyframes and/or
 /// the previous frame, chosen by the caller), runs DetermineStaticPoints and returns the result.
-/// With fewer than config.min_graph_points such points nothing runs (`ran` stays false). With
+/// With fewer than kMinGraphPoints such points nothing runs (`ran` stays false). With
 /// more than config.max_graph_points (when > 0) the graph is built over that many: every unsettled
 /// point (unmarked, or a candidate) and verified static points spread evenly over the image for the
 /// rest (SpatiallyEvenSubset); the others follow in graph_match / result.labels with their

@@ -21,13 +21,7 @@ struct PointMatch {
 
 /// How MatchLocalMap searches.
 struct LocalMapSearch {
-  double radius_px = 10.0;  ///< [px] search radius at octave 0 of marked points
-  /// [px] search radius at octave 0 of unmarked points: they move on their own, so the camera's
-  /// prediction places them less well.
-  double unmarked_radius_px = 10.0;
-  /// [m] an unmarked point matches only features whose depth measurement lies within this of its
-  /// predicted position (or that have none); 0: no such test.
-  double unmarked_max_offset_m = 0.0;
+  double radius_px = 10.0;  ///< [px] search radius at octave 0
   /// [m] points nearer than this along the optical axis (so also points behind the camera) are
   /// skipped.
   double min_depth_m = 0.1;
@@ -47,7 +41,7 @@ struct ProjectedLocalMap {
 };
 
 /// Projects the map points `candidates` into the frame with `T_camera_world`, each with its
-/// search radius from `search` (by the point's `marked`) and from p_world (or from its
+/// search radius from `search` and from p_world (or from its
 /// measurement in search.last_frame). Points nearer than search.min_depth_m
 /// or outside the image are skipped; search.count_visible is not read here (see MatchLocalMap).
 ProjectedLocalMap ProjectLocalMap(const Map& map, const std::vector<PointId>& candidates,

@@ -26,13 +26,8 @@ struct MapPoint {
   PointId id = -1;                                          ///< assigned by Map::AddPoint
   Eigen::Vector3d p_world = Eigen::Vector3d::Zero();        ///< position [m], world frame
   Eigen::Matrix3d cov_world = Eigen::Matrix3d::Identity();  ///< position covariance [m^2]
-  /// 1x32 CV_8U ORB descriptor matched against: the creating observation's, or with
-  /// RefineDescriptor the medoid of `observed_descriptors`.
-  cv::Mat descriptor;
-  /// Nx32 CV_8U descriptors of its observations at keyframes, oldest first (RefineDescriptor);
-  /// empty until the first refinement.
-  cv::Mat observed_descriptors;
-  int octave = 0;                     ///< pyramid level of that observation
+  cv::Mat descriptor;  ///< 1x32 CV_8U ORB descriptor matched against: the creating observation's
+  int octave = 0;      ///< pyramid level of that observation
   int created_feature = -1;           ///< index of that observation's feature in its frame
   double reference_distance_m = 0.0;  ///< [m] camera distance of that observation
   bool marked = true;  ///< not known to move: only marked points drive motion estimation
@@ -73,14 +68,6 @@ struct MapPoint {
     }
   }
 };
-
-/// Adds the 1x32 descriptor `observed` (an observation of `point` at a keyframe) to
-/// point->observed_descriptors, dropping the oldest beyond `max_observations`, and sets
-/// point->descriptor to the medoid of those n kept: the one whose median Hamming distance to
-/// them (the element n/2 of its n sorted distances, its own 0 included) is least, the older on
-/// ties (ORB-SLAM2's "distinctive descriptor"). The creating descriptor counts as the first
-/// observation. max_observations <= 1: nothing changes.
-void RefineDescriptor(MapPoint* point, const cv::Mat& observed, int max_observations);
 
 /// RGB-D measurements of map points in one frame, with that frame's pose: the raw material of
 /// point-correlation measurements z_ijk = y_ik - y_jk (paper Eq. meas_con_imp).

@@ -89,8 +89,7 @@ class Odometry {
   ProjectedLocalMap ProjectUnmatchedLocalPoints(const Current& current,
                                                 const Eigen::Isometry3d& T_camera_world,
                                                 const LocalMapSearch& search) const;
-  /// The local-map search with `radius_px` [px] for marked points and at least
-  /// tracking.unmarked_search_radius_px for unmarked ones (with tracking.unmarked_max_offset_m).
+  /// The local-map search with `radius_px` [px] (marked and unmarked points alike).
   LocalMapSearch SearchWithin(double radius_px, bool count_visible) const;
   /// Pose from static points (verified, else marked) starting at `T_camera_world_guess`; when
   /// they give too few inliers, a RANSAC pose over all matches. Sets current->pose and, on
@@ -129,9 +128,6 @@ class Odometry {
   /// Whether match `m` was an inlier of the frame's pose and not excluded from it.
   static bool DrovePose(const Current& current, size_t m);
   void FuseStaticPoints(const Current& current);
-  /// The keyframe's pose inliers (not excluded) add their descriptors to their points
-  /// (RefineDescriptor, tracking.descriptor_observations).
-  void RefineDescriptors(const Current& current);
   FrameMeasurements MeasurementsOf(const Current& current,
                                    const std::vector<PointId>& created) const;
   FrameResult Lost(Current* current, FrameResult result, const char* why);

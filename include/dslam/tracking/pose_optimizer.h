@@ -50,13 +50,20 @@ struct PoseResult {
   Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
+/// How EstimatePose solves each round. dslam runs kLevenbergMarquardt (pose_solver_lm.cpp);
+/// kCeres solves the same cost with Ceres: the reference the tests and dslam_features_bench check
+/// the hand-written solver against (BENCHMARKS.md, "Motion-only BA solver": the same
+/// trajectories, slower).
+enum class PoseSolver { kLevenbergMarquardt, kCeres };
+
 /// Motion-only BA from `T_camera_world_guess`; see the top of this file. `camera` supplies the
 /// intrinsics of the pixel residuals. Huber widths apply to the whitened residual norm. The first
 /// round uses the observations flagged in `initial_inliers` (all when null or empty).
 PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
                         const Eigen::Isometry3d& T_camera_world_guess, const PinholeCamera& camera,
                         const PoseConfig& config,
-                        const std::vector<bool>* initial_inliers = nullptr);
+                        const std::vector<bool>* initial_inliers = nullptr,
+                        PoseSolver solver = PoseSolver::kLevenbergMarquardt);
 
 /// Squared Mahalanobis error of one observation at a pose (3 dof with depth, 2 dof without).
 double SquaredError(const PoseObservation& observation, const Eigen::Isometry3d& T_camera_world,

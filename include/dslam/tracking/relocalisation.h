@@ -17,7 +17,7 @@
 
 namespace dslam {
 
-/// Acceptance rules of a descriptor match (MatchBruteForce).
+/// Acceptance rules of a descriptor match (MatchBruteForce); relocalisation uses the defaults.
 struct DescriptorMatchRules {
   int max_distance_bits = 64;  ///< [bits] of 256: a match must be nearer than this
   double ratio = 0.8;          ///< [-] and nearer than ratio x the second nearest

@@ -5,11 +5,11 @@
 // Hypotheses: 3 distinct observations with depth drawn with a seeded std::mt19937; rejected when
 // the triangle is degenerate (area < 1e-4 m^2) or the pairwise distances differ between world and
 // camera by more than 5 sigma (rigid-motion check); pose by Umeyama/Horn (no scale). Inlier:
-// e^T (C + s^2 I)^-1 e < chi2_depth, e = T_cw p_w - y, s = ransac_extra_sigma_m (the map point's
+// e^T (C + s^2 I)^-1 e < chi2_depth, e = T_cw p_w - y, s = kRansacExtraSigmaM (the map point's
 // own error), so the metric threshold grows with depth through C. The best hypothesis (most
 // inliers, then least summed error) is refitted on its inliers; adaptive stopping after
-// log(1 - confidence) / log(1 - w^3) hypotheses (w = best inlier ratio), at most
-// ransac_max_iterations.
+// log(1 - kRansacConfidence) / log(1 - w^3) hypotheses (w = best inlier ratio), at most
+// kRansacMaxHypotheses.
 
 #include <cstdint>
 #include <vector>
@@ -17,6 +17,10 @@
 #include "dslam/tracking/pose_optimizer.h"
 
 namespace dslam {
+
+constexpr int kRansacMaxHypotheses = 300;    ///< RANSAC hypotheses at most
+constexpr double kRansacConfidence = 0.999;  ///< [-] RANSAC stopping confidence
+constexpr double kRansacExtraSigmaM = 0.01;  ///< [m] sigma added to C in the inlier test
 
 /// RANSAC result (before refinement).
 struct RansacResult {
@@ -32,9 +36,10 @@ RansacResult RansacPose(const std::vector<PoseObservation>& observations, const 
                         std::uint32_t seed = 1);
 
 /// RansacPose() then EstimatePose() over all observations (pixel-only included) started from the
-/// RANSAC pose; returns the BA result (success false when RANSAC failed).
+/// RANSAC pose, solved by `solver`; returns the BA result (success false when RANSAC failed).
 PoseResult EstimatePoseRobust(const std::vector<PoseObservation>& observations,
                               const PinholeCamera& camera, const PoseConfig& config,
-                              std::uint32_t seed = 1);
+                              std::uint32_t seed = 1,
+                              PoseSolver solver = PoseSolver::kLevenbergMarquardt);
 
 }  // namespace dslam
