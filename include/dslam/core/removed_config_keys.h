@@ -11,9 +11,9 @@ namespace dslam {
 /// One removed parameter: `section`.`name`, and what happened to it (the BENCHMARKS.md section
 /// that measured the losing option, the key it was merged into, or the constant that replaced it).
 struct RemovedConfigKey {
-  const char* section;  ///< config section, e.g. "tracking"
-  const char* name;     ///< key inside the section, e.g. "descriptor_observations"
-  const char* reason;   ///< one line, e.g. "merged into depth_noise.max_depth_m"
+  std::string section;  ///< config section, e.g. "tracking"
+  std::string name;     ///< key inside the section, e.g. "descriptor_observations"
+  std::string reason;   ///< one line, e.g. "merged into depth_noise.max_depth_m"
 };
 
 /// Every removed parameter, by section.
