@@ -4,14 +4,15 @@
 // Distribution rule: an image pyramid of `num_levels` levels (each `scale_factor` smaller) gets a
 // share of `num_features` proportional to its area (ORB-SLAM2's geometric split, any shortfall
 // carried to the next level). Every level is cut into square cells of 30 px (kCellSizePx,
-// orb_pyramid.cpp); FAST runs per cell with `fast_threshold`, and again with `fast_threshold_min` in cells where nothing was
-// found (the keypoints of one cv::FAST call per cell, found with one call per row of cells:
-// fast_grid.h). Cells then hand out keypoints round-robin, strongest (FAST score) first: round k takes
-// the k-th best keypoint of every cell that still has one, until the level's share is reached (the
-// last round prefers the strongest). Orientation is the intensity centroid; rBRIEF descriptors
-// come from cv::ORB run on each level of a pyramid built like cv::ORB's own (each level from the
-// one before). Levels, cells' orientations, descriptors and depth measurements run in parallel
-// (OpenCV's thread pool); the result does not depend on the thread count.
+// orb_pyramid.cpp); FAST runs per cell with `fast_threshold`, and again with `fast_threshold_min`
+// in cells where nothing was found (the keypoints of one cv::FAST call per cell, found with one
+// call per row of cells: fast_grid.h). Cells then hand out keypoints round-robin, strongest (FAST
+// score) first: round k takes the k-th best keypoint of every cell that still has one, until the
+// level's share is reached (the last round prefers the strongest). Orientation is the intensity
+// centroid; rBRIEF descriptors come from cv::ORB run on each level of a pyramid built like
+// cv::ORB's own (each level from the one before). Levels, cells' orientations, descriptors and
+// depth measurements run in parallel (OpenCV's thread pool); the result does not depend on the
+// thread count.
 
 #include <optional>
 #include <vector>
