@@ -297,11 +297,13 @@ TEST(ObservationsFromMask, SmallRegionsAreLeftOut) {
   DynamicMask mask;
   DynamicRegion big, few_points, few_cells;
   big.points.assign(10, 0);
+  big.points_world.assign(10, Eigen::Vector3d::Zero());  // a world position per point (same order)
   big.cells = 100;
   big.min_world = Eigen::Vector3d(0, 0, 0);
   big.max_world = Eigen::Vector3d(0.4, 1.8, 0.3);
   few_points = big;
   few_points.points.assign(2, 0);
+  few_points.points_world.assign(2, Eigen::Vector3d::Zero());
   few_cells = big;
   few_cells.cells = 3;
   mask.regions = {big, few_points, few_cells};
