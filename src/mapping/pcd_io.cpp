@@ -2,6 +2,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -40,14 +42,19 @@ void WritePcd(const std::string& path, const ColouredCloud& cloud) {
 }
 
 ColouredCloud ReadPcd(const std::string& path) {
-  pcl::PointCloud<pcl::PointXYZRGB> in;
+  pcl::PCLPointCloud2 blob;
   int status = -1;
   try {
-    status = pcl::io::loadPCDFile(path, in);
+    status = pcl::io::loadPCDFile(path, blob);
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot read " + path + ": " + e.what());
   }
   if (status != 0) throw std::runtime_error("cannot read " + path);
+  // PCL 1.13's fromPCLPointCloud2 takes &cloud[0] of an empty cloud (undefined behaviour,
+  // UBSan in scripts/sanitize.sh address): a file without points is read as an empty cloud here.
+  if (blob.width * blob.height == 0) return {};
+  pcl::PointCloud<pcl::PointXYZRGB> in;
+  pcl::fromPCLPointCloud2(blob, in);
   ColouredCloud cloud;
   cloud.reserve(in.size());
   for (const pcl::PointXYZRGB& q : in) {
