@@ -29,6 +29,9 @@ fi
 if [[ "${DSLAM_TEST_TSAN:-1}" != 0 ]]; then
   TSAN_LOG="$REPO/build/tsan.log"
   echo "[test] ThreadSanitizer on the threaded tests (log: $TSAN_LOG)"
+  # sanitize.sh clears its reports only once its build succeeded: results of an earlier run must
+  # not stand in for a build that failed.
+  rm -rf "$REPO/build/tsan/reports"
   DSLAM_SANITIZE_SCOPE=ci "$REPO/scripts/sanitize.sh" thread > "$TSAN_LOG" 2>&1 \
     || grep -E '^(\[sanitize\]|IN DSLAM)' "$TSAN_LOG" || true
   mkdir -p "$RESULTS/tsan"

@@ -2,14 +2,14 @@
 # call that configure and build a dslam workspace, so that each workspace is configured once and
 # never re-configured because two scripts passed different CMake arguments.
 #
-# Sets (when not set already): REPO, WS (DSLAM_WS, default build/ws), JOBS (DSLAM_JOBS, 2),
-# ROS_HOME (build/ros_home) and the compiler cache: CCACHE_DIR (default
+# Sets REPO (this checkout) and, when not set already, WS (DSLAM_WS, default build/ws), JOBS
+# (DSLAM_JOBS, 2), ROS_HOME (build/ros_home) and the compiler cache: CCACHE_DIR (default
 # ${XDG_CACHE_HOME:-$HOME/.cache}/dslam/ccache, outside the checkout so that a fresh clone
 # compiles from the cache; set CCACHE_DIR to move it), CCACHE_BASEDIR (the repository: paths
 # below it are hashed relative to the compiler's directory, so a clone elsewhere hits the same
 # entries) and CCACHE_NOHASHDIR (the working directory is not hashed either).
 export PATH="/usr/bin:/bin:/usr/sbin:/sbin:$PATH"  # a non-Debian python3 must not shadow Debian's
-REPO="${REPO:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}"
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WS="${DSLAM_WS:-$REPO/build/ws}"
 JOBS="${DSLAM_JOBS:-2}"
 export ROS_HOME="${ROS_HOME:-$REPO/build/ros_home}"
