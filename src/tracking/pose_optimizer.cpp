@@ -14,14 +14,17 @@ namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Adds J^T J of one observation's whitened Jacobian J w.r.t. [dtheta_c, dt_c] (left
-// perturbation) at T_cw; `S` is the observation's C^-1/2 (depth).
+// Adds J^T J of one observation's whitened Jacobian J w.r.t. [dtheta_c, dt_c] at T_cw, for the
+// perturbation the solvers use, (Exp(dtheta_c) R_cw, t_cw + dt_c): p = R_cw p_w + t_cw moves by
+// -[R_cw p_w]x dtheta_c + dt_c (the translation is not rotated). `S` is the observation's C^-1/2
+// (depth).
 void AddInformation(const PoseObservation& o, const Eigen::Matrix3d& S,
                     const Eigen::Isometry3d& T_cw, const PinholeCamera& camera,
                     Matrix6d* information) {
-  const Eigen::Vector3d p = T_cw * o.p_world;
+  const Eigen::Vector3d p_rotated = T_cw.linear() * o.p_world;
+  const Eigen::Vector3d p = p_rotated + T_cw.translation();
   Eigen::Matrix<double, 3, 6> dp;
-  dp << -Skew(p), Eigen::Matrix3d::Identity();
+  dp << -Skew(p_rotated), Eigen::Matrix3d::Identity();
   if (o.has_depth) {
     const Eigen::Matrix<double, 3, 6> J = S * dp;
     information->noalias() += J.transpose() * J;

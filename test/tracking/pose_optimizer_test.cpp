@@ -102,6 +102,85 @@ TEST(PoseOptimizer, PerturbationMappingMatchesFiniteDifferences) {
   }
 }
 
+// Information of the inlier residuals at T_cw, J^T W J, with J by central differences of the
+// residuals under the perturbation `perturb(T_cw, delta)` (delta in R^6).
+template <typename Perturb>
+Eigen::Matrix<double, 6, 6> NumericInformation(const test::PoseScene& scene,
+                                               const std::vector<bool>& inliers,
+                                               const Eigen::Isometry3d& T_cw,
+                                               const PinholeCamera& camera, Perturb perturb) {
+  const double h = 1e-6;
+  auto residual = [&](const PoseObservation& o, const Eigen::Isometry3d& T) -> Eigen::Vector3d {
+    const Eigen::Vector3d p = T * o.p_world;
+    if (o.has_depth) return p - o.y_camera;
+    const Eigen::Vector2d e = (camera.Project(p) - o.uv_ideal) / o.pixel_sigma_px;
+    return Eigen::Vector3d(e.x(), e.y(), 0.0);
+  };
+  Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
+  for (size_t i = 0; i < scene.observations.size(); ++i) {
+    if (!inliers[i]) continue;
+    const PoseObservation& o = scene.observations[i];
+    Eigen::Matrix<double, 3, 6> J;
+    for (int k = 0; k < 6; ++k) {
+      Eigen::Matrix<double, 6, 1> delta = Eigen::Matrix<double, 6, 1>::Zero();
+      delta(k) = h;
+      J.col(k) = (residual(o, perturb(T_cw, delta)) - residual(o, perturb(T_cw, -delta))) / (2 * h);
+    }
+    const Eigen::Matrix3d W = o.has_depth ? Eigen::Matrix3d(o.covariance.inverse())
+                                          : Eigen::Matrix3d(Eigen::Vector3d(1, 1, 0).asDiagonal());
+    information += J.transpose() * W * J;
+  }
+  return information;
+}
+
+// PoseResult::information is J^T J of the perturbation (Exp(dtheta) R_cw, t_cw + dt) that the
+// solvers use, also for a camera away from the world origin.
+TEST(PoseOptimizer, InformationMatchesFiniteDifferences) {
+  const PinholeCamera camera = test::TestCamera();
+  const test::PoseScene scene = test::MakePoseScene(camera, 60, 0.0, 15, 5);
+  ASSERT_GT(scene.T_camera_world.translation().norm(), 1.0);
+  const PoseResult r = EstimatePose(scene.observations, scene.T_camera_world, camera, PoseConfig());
+  ASSERT_TRUE(r.success);
+  auto left = [](const Eigen::Isometry3d& T, const Eigen::Matrix<double, 6, 1>& d) {
+    Eigen::Isometry3d P = T;
+    P.linear() =
+        Eigen::AngleAxisd(d.head<3>().norm(), d.head<3>().normalized()).matrix() * T.rotation();
+    P.translation() = T.translation() + d.tail<3>();
+    return P;
+  };
+  const Eigen::Matrix<double, 6, 6> numeric =
+      NumericInformation(scene, r.inliers, r.T_camera_world, camera, left);
+  EXPECT_LT((numeric - r.information).norm(), 1e-5 * numeric.norm())
+      << "analytic\n"
+      << r.information << "\nnumeric\n"
+      << numeric;
+}
+
+// CovarianceWorldCamera() is the inverse information of T_world_camera in ROS order
+// [x y z rx ry rz] (rotation about the fixed world axes), from finite differences.
+TEST(PoseOptimizer, CovarianceMatchesFiniteDifferences) {
+  const PinholeCamera camera = test::TestCamera();
+  const test::PoseScene scene = test::MakePoseScene(camera, 60, 0.0, 16, 5);
+  const PoseResult r = EstimatePose(scene.observations, scene.T_camera_world, camera, PoseConfig());
+  ASSERT_TRUE(r.success);
+  auto world = [](const Eigen::Isometry3d& T_cw, const Eigen::Matrix<double, 6, 1>& d) {
+    const Eigen::Isometry3d T_wc = T_cw.inverse();
+    Eigen::Isometry3d P = T_wc;
+    P.linear() =
+        Eigen::AngleAxisd(d.tail<3>().norm(), d.tail<3>().normalized()).matrix() * T_wc.rotation();
+    P.translation() = T_wc.translation() + d.head<3>();
+    return Eigen::Isometry3d(P.inverse());
+  };
+  const Eigen::Matrix<double, 6, 6> numeric =
+      NumericInformation(scene, r.inliers, r.T_camera_world, camera, world)
+          .ldlt()
+          .solve(Eigen::Matrix<double, 6, 6>::Identity());
+  const Eigen::Matrix<double, 6, 6> covariance = CovarianceWorldCamera(r);
+  EXPECT_LT((numeric - covariance).norm(), 1e-4 * numeric.norm()) << "analytic\n"
+                                                                  << covariance << "\nnumeric\n"
+                                                                  << numeric;
+}
+
 TEST(PoseOptimizer, FailsWithTooFewObservations) {
   const PinholeCamera camera = test::TestCamera();
   const test::PoseScene scene = test::MakePoseScene(camera, 2, 0.0, 14);
