@@ -1,13 +1,18 @@
 #include "dslam/backend/local_mapping_job.h"
 
+#include <unordered_set>
+
 #include "dslam/backend/local_bundle_adjustment.h"
 #include "dslam/backend/window_static_points.h"
 
 namespace dslam {
 
 LocalMappingJob::LocalMappingJob(const Map& map, uint64_t generation)
-    : window_(map.WindowCopy()), generation_(generation) {
-  if (!window_.keyframes().empty()) newest_keyframe_id_ = window_.keyframes().back().id;
+    : window_(map.WindowCopy()), generation_(generation), first_new_point_id_(map.next_point_id()) {
+  if (!window_.keyframes().empty()) {
+    newest_keyframe_id_ = window_.keyframes().back().id;
+    T_world_newest_copied_ = window_.keyframes().back().T_world_camera;
+  }
   for (const KeyFrame& keyframe : window_.keyframes()) {
     for (const auto& entry : keyframe.measurements.by_point) {
       const MapPoint* point = window_.Find(entry.first);
@@ -18,6 +23,7 @@ LocalMappingJob::LocalMappingJob(const Map& map, uint64_t generation)
 }
 
 void LocalMappingJob::Run(const Config& config) {
+  unmark_min_dynamic_frames_ = config.tracking.remark_frames;
   // Algorithm 1 over the window first: local BA then uses only the points that stayed marked.
   if (config.static_points.enabled) {
     const WindowStaticPointsStats spd = DetermineStaticPointsInWindow(config, &window_);
@@ -51,17 +57,44 @@ void LocalMappingJob::Apply(Map* map) const {
       live->T_world_camera = refined.T_world_camera;
       live->measurements.T_camera_world = refined.measurements.T_camera_world;
     }
+    MoveWhatWasMadeSince(map);
   }
+  ApplyToPoints(map);
+}
+
+void LocalMappingJob::ApplyToPoints(Map* map) const {
   for (const auto& [id, before] : before_) {
     const MapPoint* refined = window_.Find(id);
     MapPoint* live = map->Find(id);
     if (refined == nullptr || live == nullptr) continue;
-    if (refined->p_world != before.p_world) live->p_world = refined->p_world;
-    if (before.marked && !refined->marked) {  // unmarked by the window (Unmark's fields)
-      live->marked = false;
-      live->candidate = refined->candidate;
-      live->static_streak = refined->static_streak;
-      live->dynamic_frames = refined->dynamic_frames;
+    if (refined->p_world != before.p_world) {
+      if (live->p_world == before.p_world) {
+        live->p_world = refined->p_world;
+      } else if (live->marked) {
+        live->p_world += refined->p_world - before.p_world;
+      }
+    }
+    if (before.marked && !refined->marked) live->Unmark(unmark_min_dynamic_frames_);
+  }
+}
+
+Eigen::Isometry3d LocalMappingJob::correction() const {
+  if (!moved_keyframes() || window_.keyframes().empty()) return Eigen::Isometry3d::Identity();
+  return window_.keyframes().back().T_world_camera * T_world_newest_copied_.inverse();
+}
+
+void LocalMappingJob::MoveWhatWasMadeSince(Map* map) const {
+  const Eigen::Isometry3d T_new_old = correction();
+  std::unordered_set<PointId> moved;
+  for (KeyFrame& keyframe : map->mutable_keyframes()) {
+    if (keyframe.id <= newest_keyframe_id_) continue;
+    keyframe.T_world_camera = T_new_old * keyframe.T_world_camera;
+    keyframe.measurements.T_camera_world = keyframe.T_world_camera.inverse();
+    for (PointId id : keyframe.points) {
+      MapPoint* point = map->Find(id);
+      if (id < first_new_point_id_ || point == nullptr || !moved.insert(id).second) continue;
+      point->p_world = T_new_old * point->p_world;
+      point->cov_world = T_new_old.linear() * point->cov_world * T_new_old.linear().transpose();
     }
   }
 }

@@ -28,6 +28,7 @@ void Odometry::Reset(ResetMode mode) {
     motion_.ForgetVelocity();
   }
   previous_ = FrameMeasurements();
+  last_on_keyframe_ = PoseOnKeyFrame();
   last_tracked_.clear();
   initialised_ = false;
   frame_index_ = lost_frames_ = 0;
@@ -96,6 +97,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.T_world_camera = current.T_camera_world.inverse();
   result.information = current.pose.information;
   motion_.Update(frame.stamp_s, result.T_world_camera);
+  RememberPoseOnNewestKeyFrame(result.frame_index);
   Summarise(current, &result);
   result.times.total_ms = total.ElapsedMs();
   return result;
@@ -210,6 +212,7 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   lost_frames_ = 0;
   motion_.Update(result.stamp_s, motion_.last_pose());
   motion_.ForgetVelocity();
+  RememberPoseOnNewestKeyFrame(result.frame_index);
   result.state = TrackingState::kInitialised;
   result.has_pose = first;  // a re-initialisation's pose is assumed, never reported
   result.T_world_camera = motion_.last_pose();

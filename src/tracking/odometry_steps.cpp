@@ -314,12 +314,25 @@ void Odometry::AddViews(const Current& current, FrameResult* result) const {
   }
 }
 
-void Odometry::AdoptNewestKeyFramePose() {
-  if (map_.keyframes().empty() || lost_frames_ > 0) return;
+void Odometry::RememberPoseOnNewestKeyFrame(int frame_index) {
   const KeyFrame& newest = map_.keyframes().back();
-  if (newest.frame_index != frame_index_ - 1) return;  // not made from the last frame
-  motion_.CorrectLastPose(newest.T_world_camera);
-  previous_.T_camera_world = newest.measurements.T_camera_world;
+  last_on_keyframe_.keyframe_id = newest.id;
+  last_on_keyframe_.frame_index = frame_index;
+  last_on_keyframe_.T_keyframe_camera = newest.T_world_camera.inverse() * motion_.last_pose();
+}
+
+void Odometry::AdoptNewestKeyFramePose() {
+  const KeyFrame* keyframe = map_.FindKeyFrame(last_on_keyframe_.keyframe_id);
+  if (keyframe == nullptr) return;
+  if (keyframe->frame_index == last_on_keyframe_.frame_index) {  // made from the last frame
+    motion_.CorrectLastPose(keyframe->T_world_camera);
+    previous_.T_camera_world = keyframe->measurements.T_camera_world;
+    return;
+  }
+  const Eigen::Isometry3d T_world_last =
+      keyframe->T_world_camera * last_on_keyframe_.T_keyframe_camera;
+  motion_.CorrectLastPose(T_world_last);
+  previous_.T_camera_world = T_world_last.inverse();
 }
 
 }  // namespace dslam

@@ -102,12 +102,71 @@ TEST(LocalMappingJob, ApplySkipsWhatLeftTheMapMeanwhile) {
   job.Apply(&live);
   EXPECT_EQ(live.Find(5), nullptr);  // not brought back
   EXPECT_EQ(live.FindKeyFrame(0), nullptr);
+  // The keyframe made meanwhile is not refined; it moves with the copied window's newest.
+  const Eigen::Isometry3d correction = live.FindKeyFrame(job.newest_keyframe_id())->T_world_camera *
+                                       MakeMap(4).keyframes().back().T_world_camera.inverse();
   EXPECT_TRUE(live.FindKeyFrame(newest_id)->T_world_camera.translation().isApprox(
-      Eigen::Vector3d(9.0, 9.0, 9.0)));
+      correction * Eigen::Vector3d(9.0, 9.0, 9.0)));
   // The others were refined: keyframe 2 moved from its perturbed start.
   Map untouched = MakeMap(4);
   EXPECT_FALSE(live.FindKeyFrame(2)->T_world_camera.isApprox(
       untouched.FindKeyFrame(2)->T_world_camera, 1e-9));
+}
+
+// In threaded mode tracking goes on while a run works on its copy: what the front end changed
+// meanwhile must survive Apply, with the run's own results added to it.
+TEST(LocalMappingJob, KeepsWhatTheFrontEndChangedDuringTheRun) {
+  Config config = TestConfig();
+  config.tracking.remark_frames = 3;
+  Map in_place = MakeMap(5), live = MakeMap(5);
+  const Map untouched = MakeMap(5);
+  DetermineStaticPointsInWindow(config, &in_place);
+  LocalBundleAdjustment(config, &in_place);
+  LocalMappingJob job(live, 0);
+  // Meanwhile the front end found static point 0 moving and re-positioned it, fused a new
+  // measurement into static point 1, and labelled moving point kStatic dynamic in 10 frames.
+  live.Find(0)->Unmark(0);
+  live.Find(0)->p_world = Eigen::Vector3d(7.0, 7.0, 7.0);
+  const Eigen::Vector3d fused(0.001, 0.0, 0.0);
+  live.Find(1)->p_world += fused;
+  for (int frame = 0; frame < 10; ++frame) live.Find(kStatic)->Unmark(0);
+  job.Run(config);
+  job.Apply(&live);
+  ASSERT_NE(in_place.Find(0)->p_world, untouched.Find(0)->p_world);  // the run moved both
+  ASSERT_NE(in_place.Find(1)->p_world, untouched.Find(1)->p_world);
+  ASSERT_FALSE(in_place.Find(kStatic)->marked);  // and unmarked the moving one
+  EXPECT_EQ(live.Find(0)->p_world, Eigen::Vector3d(7.0, 7.0, 7.0));
+  EXPECT_FALSE(live.Find(0)->marked);
+  EXPECT_TRUE(live.Find(1)->p_world.isApprox(in_place.Find(1)->p_world + fused, 1e-12))
+      << live.Find(1)->p_world.transpose();
+  EXPECT_FALSE(live.Find(kStatic)->marked);
+  EXPECT_EQ(live.Find(kStatic)->dynamic_frames, 11);  // the front end's 10 and the window's one
+}
+
+// Keyframes and points made while the run worked are not in its window; they were placed from
+// poses tracked against the uncorrected map, so they move with the window's newest keyframe.
+TEST(LocalMappingJob, WhatWasMadeDuringTheRunFollowsItsNewestKeyFrame) {
+  const Config config = TestConfig();
+  Map live = MakeMap(6);
+  LocalMappingJob job(live, 0);
+  const Eigen::Isometry3d T_world_newest = live.keyframes().back().T_world_camera;
+  KeyFrame made;
+  made.T_world_camera = T_world_newest * Eigen::Translation3d(0.05, 0.0, 0.01);
+  made.measurements.T_camera_world = made.T_world_camera.inverse();
+  MapPoint point;
+  point.p_world = made.T_world_camera * Eigen::Vector3d(0.1, -0.2, 2.0);
+  const PointId point_id = live.AddPoint(point);
+  made.points.push_back(point_id);
+  const int made_id = live.AddKeyFrame(made, 100).id;
+  job.Run(config);
+  job.Apply(&live);
+  const Eigen::Isometry3d correction =
+      live.FindKeyFrame(job.newest_keyframe_id())->T_world_camera * T_world_newest.inverse();
+  ASSERT_GT(correction.translation().norm(), 1e-5);
+  const KeyFrame& after = *live.FindKeyFrame(made_id);
+  EXPECT_TRUE(after.T_world_camera.isApprox(correction * made.T_world_camera, 1e-12));
+  EXPECT_TRUE(after.measurements.T_camera_world.isApprox(after.T_world_camera.inverse(), 1e-12));
+  EXPECT_TRUE(live.Find(point_id)->p_world.isApprox(correction * point.p_world, 1e-12));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // on one short rendered sequence, and the back-end queue: backlog, coalescing, hold, Reset and
 // destruction with keyframes queued, and a dynamic scene whose map changes while a run is in
 // flight. Also run under ThreadSanitizer by CI (scripts/test.sh) and scripts/sanitize.sh.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <future>
@@ -214,6 +215,41 @@ int ChangedPoints(const Map& before, const Map& after) {
   return changed;
 }
 
+// The runs reported after the held results were applied (polls TakeUnreportedRuns, 10 s at most).
+int WaitForAppliedRuns(Slam* slam) {
+  for (int ms = 0; ms < 10000; ++ms) {
+    const std::vector<BackEndStatus> runs = slam->TakeUnreportedRuns();
+    if (!runs.empty())
+      return static_cast<int>(std::count_if(runs.begin(), runs.end(),
+                                            [](const BackEndStatus& run) { return run.ran; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ADD_FAILURE() << "the held run was never applied";
+  return 0;
+}
+
+// What tracking changed while a run was in flight (from `at_copy` to `before`) must survive the
+// run's Apply (`after`): unmarked points that tracking re-positioned stay unmarked where it put
+// them, and no point's count of dynamic frames goes back. Returns the number of such unmarked
+// points checked.
+int FrontEndUpdatesKept(const Map& at_copy, const Map& before, const Map& after) {
+  int unmarked = 0;
+  for (const KeyFrame& keyframe : before.keyframes()) {
+    for (const PointId id : keyframe.points) {
+      const MapPoint* copied = at_copy.Find(id);
+      const MapPoint* a = before.Find(id);
+      const MapPoint* b = after.Find(id);
+      if (a == nullptr || b == nullptr) continue;
+      EXPECT_GE(b->dynamic_frames, a->dynamic_frames) << "point " << id;
+      if (a->marked || copied == nullptr || copied->p_world == a->p_world) continue;
+      ++unmarked;
+      EXPECT_FALSE(b->marked) << "point " << id;
+      EXPECT_EQ(b->p_world, a->p_world) << "point " << id;
+    }
+  }
+  return unmarked;
+}
+
 // Takes Slam::MapSnapshot() about every millisecond on a thread of its own until destroyed: a
 // reader of the map beside tracking, as the node's services are.
 class SnapshotReader {
@@ -265,9 +301,14 @@ TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
   for (; next < kWalkingFrames; ++next) {
     if (next == kInFlightUntil) {
       ASSERT_NE(at_copy, nullptr) << "the run never copied its window";
-      EXPECT_GT(ChangedPoints(*at_copy, slam.MapSnapshot()), 0);
+      const Map before_apply = slam.MapSnapshot();
+      EXPECT_GT(ChangedPoints(*at_copy, before_apply), 0);
       reader = std::make_unique<SnapshotReader>(&slam);
+      slam.HoldBackEnd(true);  // no later run between the two snapshots
       slam.HoldBackEndResults(false);
+      delivered += WaitForAppliedRuns(&slam);
+      EXPECT_GT(FrontEndUpdatesKept(*at_copy, before_apply, slam.MapSnapshot()), 0);
+      slam.HoldBackEnd(false);
     }
     const FrameResult r = slam.ProcessFrame(walking.frames[next]);
     with_pose += r.has_pose;

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "dslam/core/config.h"
 #include "dslam/tracking/frame_result.h"
@@ -27,10 +28,21 @@ class LocalMappingJob {
   /// then local BA, on the copy. Fills status() but for window_keyframes.
   void Run(const Config& config);
 
-  /// Writes the run's results to `map`: keyframe poses of the keyframes still in its window,
-  /// positions of the points the run moved and the mark state of the points it unmarked, for
-  /// the points still in it. Nothing when local BA was rejected and nothing was unmarked.
+  /// Writes the run's results to `map`, which tracking may have changed since the copy, for the
+  /// keyframes and points still in it:
+  /// - keyframe poses of the copied window; keyframes made since the copy, and the points they
+  ///   made, move rigidly with the window's newest keyframe (correction());
+  /// - positions of the points the run moved: the run's position where tracking left the point
+  ///   as copied; the run's displacement added where tracking moved a marked point (fusion);
+  ///   tracking's position where it moved an unmarked point (it follows its object);
+  /// - points the run unmarked are unmarked in `map` (MapPoint::Unmark with
+  ///   tracking.remark_frames), on top of what tracking counted meanwhile.
+  /// Positions and poses are left alone when local BA was rejected.
   void Apply(Map* map) const;
+
+  /// [world_new <- world_old] How the run moved the copied window's newest keyframe,
+  /// T_world_camera_refined * T_world_camera_copied^-1; identity when no keyframe moved.
+  Eigen::Isometry3d correction() const;
 
   const BackEndStatus& status() const { return status_; }
   uint64_t generation() const { return generation_; }
@@ -45,9 +57,16 @@ class LocalMappingJob {
     bool marked;
   };
 
+  void ApplyToPoints(Map* map) const;
+  /// Moves the keyframes made since the copy, and the points they made, by correction().
+  void MoveWhatWasMadeSince(Map* map) const;
+
   Map window_;
   uint64_t generation_;
   int newest_keyframe_id_ = -1;
+  Eigen::Isometry3d T_world_newest_copied_ = Eigen::Isometry3d::Identity();
+  PointId first_new_point_id_ = 0;     ///< points with ids from here on were made after the copy
+  int unmark_min_dynamic_frames_ = 0;  ///< tracking.remark_frames of the run
   std::unordered_map<PointId, PointBefore> before_;
   BackEndStatus status_;
 };

@@ -131,6 +131,8 @@ class Map {
   /// The window keyframe with `id`, or nullptr when it left the window.
   KeyFrame* FindKeyFrame(int id);
 
+  /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
+  PointId next_point_id() const { return next_point_id_; }
   size_t size() const { return points_.size(); }  ///< number of map points
   void Clear();                                   ///< removes every point and keyframe
 

@@ -54,9 +54,13 @@ class Odometry {
   /// AdoptNewestKeyFramePose() after changing keyframe poses.
   Map* mutable_map() { return &map_; }
 
-  /// Continues tracking from the newest keyframe's pose in the map (refined by the back end) when
-  /// that keyframe was made from the last tracked frame; otherwise does nothing.
+  /// Moves the last tracked pose with the keyframe that was newest when that frame was tracked
+  /// (refined by the back end): that keyframe's pose when the frame was made a keyframe,
+  /// otherwise the pose relative to it that tracking found. Nothing when it left the window.
   void AdoptNewestKeyFramePose();
+  /// [optical frame -> world] Pose of the last tracked frame as tracking goes on from it: the
+  /// motion model's last pose, after the back end's corrections (identity before the first).
+  const Eigen::Isometry3d& T_world_last_camera() const { return motion_.last_pose(); }
   const Config& config() const { return config_; }
 
  private:
@@ -148,6 +152,15 @@ class Odometry {
   int lost_frames_ = 0;
   int last_keyframe_frame_ = 0;
   int last_keyframe_static_ = 0;
+
+  /// The last tracked frame's pose on the keyframe newest at the time (AdoptNewestKeyFramePose).
+  struct PoseOnKeyFrame {
+    int keyframe_id = -1;
+    int frame_index = -1;
+    Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
+  };
+  void RememberPoseOnNewestKeyFrame(int frame_index);
+  PoseOnKeyFrame last_on_keyframe_;
 };
 
 }  // namespace dslam
