@@ -59,15 +59,17 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   const double max_gap_s = config_.tracking.max_prediction_gap_s;
   const Eigen::Isometry3d T_camera_world_predicted =
       motion_.Predict(frame.stamp_s, max_gap_s).inverse();
-  const bool gap = motion_.IsGap(frame.stamp_s, max_gap_s);
-  MatchLocalMapPoints(&current, T_camera_world_predicted, lost_frames_ > 0 || gap);
+  const bool wide = lost_frames_ > 0 || motion_.IsGap(frame.stamp_s, max_gap_s);
+  MatchLocalMapPoints(&current, T_camera_world_predicted, wide);
   result.times.matching_ms = stage.Restart();
 
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
   //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
-  //    When that fails (a jump the prediction missed): relocalise by descriptors.
+  //    When that fails (a jump the prediction missed): match again with the wide radius, then
+  //    relocalise by descriptors.
   const bool have_initial_pose =
       SolveInitialPose(&current, T_camera_world_predicted, result.frame_index) ||
+      (!wide && SolveInitialPoseWide(&current, T_camera_world_predicted, result.frame_index)) ||
       Relocalise(&current, result.frame_index);
   result.times.initial_pose_ms = stage.Restart();
   if (!have_initial_pose) return Untracked(&current, std::move(result), "too few pose inliers");
@@ -124,6 +126,16 @@ bool Odometry::SolveInitialPose(Current* current, const Eigen::Isometry3d& T_cam
             BuildFrontEndGraph(map_, current->matches, current->features, config_.static_points);
       });
   return have_pose;
+}
+
+bool Odometry::SolveInitialPoseWide(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
+                                    int frame_index) {
+  current->feature_taken.assign(current->features.features.size(), false);
+  current->matches = MatchLocalMap(&map_, current->local_points, current->features,
+                                   *current->frame->camera, T_camera_world_guess,
+                                   SearchWithin(config_.tracking.wide_search_radius_px, false),
+                                   &current->feature_taken);
+  return SolveInitialPose(current, T_camera_world_guess, frame_index);
 }
 
 bool Odometry::CanRelocalise() const {

@@ -1,6 +1,6 @@
 // The odometry's resets (ResetMode), time going backwards, long gaps between frames and the
 // per-frame lists a caller asks for, on a short static_room sequence rendered in-process, and
-// relocalisation after a jump on fast_rotation.
+// relocalisation after a jump on fast_rotation, and the wide search when the narrow one fails.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -133,10 +133,16 @@ Config WithoutRelocalisation() {
 }
 
 // A jump the motion model cannot predict: frames 20-30 never arrive, the stamps say 1/30 s
-// passed. The projection search around the prediction fails; relocalisation by descriptors
-// against the window's keyframes finds the pose.
+// passed. The projection search around the prediction fails (its wide radius as narrow as the
+// narrow one here: the 30 px radius finds this jump at the upper pyramid levels);
+// relocalisation by descriptors against the window's keyframes finds the pose.
 TEST(OdometryReset, RelocalisesAfterAnUnpredictedJump) {
-  Odometry on{Config()}, off{WithoutRelocalisation()};
+  Config with_relocalisation, without_relocalisation = WithoutRelocalisation();
+  with_relocalisation.tracking.wide_search_radius_px =
+      with_relocalisation.tracking.search_radius_px;
+  without_relocalisation.tracking.wide_search_radius_px =
+      without_relocalisation.tracking.search_radius_px;
+  Odometry on{with_relocalisation}, off{without_relocalisation};
   TrackFirstFrames(&on);
   TrackFirstFrames(&off);
   RgbdFrame jumped = TurningFrames().later.frame;
@@ -148,6 +154,28 @@ TEST(OdometryReset, RelocalisesAfterAnUnpredictedJump) {
   EXPECT_EQ(with.state, TrackingState::kRecovered);
   EXPECT_NE(with.message.find("relocalised"), std::string::npos) << with.message;
   ExpectAtLaterFrame(with);
+}
+
+// The frame after initialisation has no velocity to predict with: fast_rotation's frame 2 turned
+// 5 deg from frame 0 (about 45 px; the radii grow with the pyramid level), beyond
+// search_radius_px (10) and within wide_search_radius_px (30) at the upper levels. The narrow
+// search finds enough matches not to search the rest wide (min_matches 3), but too few right
+// ones for a pose with min_static_inliers (100 here; in a real frame, blur leaves many wrong
+// matches: TUM fr1/rpy frame 1). Matching again with the wide radius gives the pose, without
+// relocalisation.
+TEST(OdometryReset, SearchesWideWhenTheNarrowSearchGivesNoPose) {
+  Config config = WithoutRelocalisation();
+  config.tracking.min_matches = 3;
+  config.tracking.min_static_inliers = 100;
+  Odometry odometry{config};
+  ASSERT_TRUE(odometry.ProcessFrame(TurningFrames().first[0].frame).has_pose);
+  const FrameResult r = odometry.ProcessFrame(TurningFrames().first[2].frame);
+  ASSERT_TRUE(r.has_pose) << r.message;
+  const Eigen::Isometry3d truth =
+      TurningFrames().first[0].T_world_camera.inverse() * TurningFrames().first[2].T_world_camera;
+  EXPECT_LT((r.T_world_camera.translation() - truth.translation()).norm(), 0.01);
+  const Eigen::AngleAxisd error(r.T_world_camera.linear().transpose() * truth.linear());
+  EXPECT_LT(error.angle(), 0.5 * M_PI / 180.0);
 }
 
 // A covered lens: frames 20-30 are black without depth, more than lost_frames_before_reset
