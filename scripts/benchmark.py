@@ -4,12 +4,18 @@ from the same run: the back end on (local bundle adjustment after keyframes; off
 static point determination off (the static-world baseline).
 Prints a Markdown table for BENCHMARKS.md.
 
-Synthetic scenarios are rendered once per seed into --cache (seeds 1, 2, 3 averaged); real data
-from ../shared/data is used when present. Usage:
+Synthetic scenarios are rendered once per seed into --cache (seeds 1, 2, 3 averaged); with
+--real, every sequence found in ../shared/data. With --reference-bin (the devel/lib/dslam folder
+of another build, e.g. a `git worktree` of an older commit built with scripts/setup.sh), that
+build's defaults run on the same sequences in the same invocation: the column "ATE reference".
+--jobs runs that many dslam_run_dataset processes at once (the per-frame times then share the
+cores). Usage:
   scripts/benchmark.py [--scenarios walking,static_room] [--seeds 1,2,3] [--frames 300]
                        [--real] [--cache build/bench] [--config params.yaml]
+                       [--reference-bin DIR] [--jobs 1]
 """
 import argparse
+import concurrent.futures
 import json
 import os
 import statistics
@@ -50,13 +56,14 @@ VARIANTS = {
 
 
 def evaluate(folder, camera, variant, out_dir, config, run_bin=BIN, eval_bin=BIN):
-    """Runs run_bin's dslam_run_dataset (`variant`) on `folder` and eval_bin's dslam_eval on its
-    trajectory (outputs in out_dir); returns the run's summary and the evaluation together."""
+    """Runs run_bin's dslam_run_dataset (`variant`; "reference": the defaults) on `folder` and
+    eval_bin's dslam_eval on its trajectory (outputs in out_dir); returns the run's summary and the
+    evaluation together."""
     traj = os.path.join(out_dir, f"trajectory_{variant}.txt")
     summary = os.path.join(out_dir, f"summary_{variant}.json")
     cmd = [os.path.join(run_bin, "dslam_run_dataset"), "--dataset", folder, "--trajectory", traj,
            "--status", os.path.join(out_dir, f"status_{variant}.csv"), "--summary", summary,
-           "--quiet"] + VARIANTS[variant]
+           "--quiet"] + VARIANTS.get(variant, [])
     if camera:
         cmd += ["--camera", camera]
     if config:
@@ -78,13 +85,13 @@ def fmt(value, digits=4):
     return "n/a" if value is None else f"{value:.{digits}f}"
 
 
-HEADER = ("| sequence | ATE [m] | ATE back end on [m] | ATE static points off [m] | "
+HEADER = ("| sequence | ATE [m] | ATE reference [m] | ATE back end on [m] | ATE static points off [m] | "
           "RPE [m/s] | RPE [deg/s] | RPE [deg/s] back end on | tracked | tracked back end on | "
           "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | "
           "back end on: dyn. precision / recall / static wrongly dyn. | "
           "frame [ms] | frame back end on [ms] | BA [ms] median / p95 | BA keyframes / points | "
           "window SPD [ms] median / p95 | window SPD points / unmarked |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 
 
 def has_movers(result):
@@ -117,7 +124,8 @@ def row(name, results):
     seg += " | " + segmentation(backend, moving).replace(" | ", " / ")
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
     tracked_backend = backend["frames_with_pose"] / max(backend["frames"], 1)
-    return (f"| {name} | {on['ate_rmse_m']:.4f} | {backend['ate_rmse_m']:.4f} | "
+    reference = f"{results['reference']['ate_rmse_m']:.4f}" if "reference" in results else "-"
+    return (f"| {name} | {on['ate_rmse_m']:.4f} | {reference} | {backend['ate_rmse_m']:.4f} | "
             f"{no_static['ate_rmse_m']:.4f} | {fmt(on.get('rpe_trans_rmse_m_per_s'))} | "
             f"{fmt(on.get('rpe_rot_rmse_deg_per_s'), 2)} | "
             f"{fmt(backend.get('rpe_rot_rmse_deg_per_s'), 2)} | {tracked:.3f} | "
@@ -135,6 +143,20 @@ def mean_of(results):
             for k in keys if all(r.get(k) is not None for r in results)}
 
 
+def run_all(jobs, tasks):
+    """Runs evaluate(*task) for every task, `jobs` at a time; returns the results in task order."""
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        return list(pool.map(lambda task: evaluate(*task), tasks))
+
+
+def real_sequences():
+    """(name, folder) of every sequence in ../shared/data (a folder with rgb.txt)."""
+    if not os.path.isdir(SHARED):
+        return []
+    return [(name, os.path.join(SHARED, name)) for name in sorted(os.listdir(SHARED))
+            if os.path.isfile(os.path.join(SHARED, name, "rgb.txt"))]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scenarios", default=",".join(SCENARIOS))
@@ -144,34 +166,38 @@ def main():
     parser.add_argument("--no-synthetic", action="store_true")
     parser.add_argument("--cache", default=os.path.join(REPO, "build", "bench"))
     parser.add_argument("--config", default="")
+    parser.add_argument("--reference-bin", default="", help="another build's devel/lib/dslam")
+    parser.add_argument("--jobs", type=int, default=1)
     args = parser.parse_args()
-    header = HEADER
-    print(header)
+    variants = list(VARIANTS) + (["reference"] if args.reference_bin else [])
+
+    def tasks(folder, camera, out_dir):
+        return [(folder, camera, v, out_dir, args.config,
+                 args.reference_bin if v == "reference" else BIN) for v in variants]
+
+    print(HEADER)
     started = time.time()
     seeds = [int(s) for s in args.seeds.split(",") if s]
     if not args.no_synthetic:
         for scenario in [s for s in args.scenarios.split(",") if s]:
-            per_seed = {variant: [] for variant in VARIANTS}
+            all_tasks = []
             for seed in seeds:
                 folder = render(scenario, seed, args.frames, args.cache)
                 out_dir = os.path.join(args.cache, "runs", os.path.basename(folder))
                 os.makedirs(out_dir, exist_ok=True)
-                for variant in VARIANTS:
-                    per_seed[variant].append(evaluate(folder, "", variant, out_dir, args.config))
+                all_tasks += tasks(folder, "", out_dir)
+            results = run_all(args.jobs, all_tasks)
+            per_seed = {v: results[i::len(variants)] for i, v in enumerate(variants)}
             means = {variant: mean_of(runs) for variant, runs in per_seed.items()}
             print(row(f"synthetic {scenario} (seeds {args.seeds})", means), flush=True)
     if args.real:
-        for name, folder in [("Bonn crowd 300-599", "bonn_crowd_frames300-599"),
-                             ("TUM fr1/desk 9 frames", "tum_fr1_desk_9frames")]:
-            path = os.path.join(SHARED, folder)
-            if not os.path.isdir(path):
-                continue
-            out_dir = os.path.join(args.cache, "runs", folder)
+        for name, path in real_sequences():
+            out_dir = os.path.join(args.cache, "runs", name)
             os.makedirs(out_dir, exist_ok=True)
-            results = {variant: evaluate(path, os.path.join(path, "camera.yaml"), variant, out_dir,
-                                         args.config) for variant in VARIANTS}
-            print(row(name, results), flush=True)
-    print(f"\n(benchmark wall time {time.time() - started:.0f} s, {os.cpu_count()} cores)")
+            results = run_all(args.jobs, tasks(path, os.path.join(path, "camera.yaml"), out_dir))
+            print(row(name, dict(zip(variants, results))), flush=True)
+    print(f"\n(benchmark wall time {time.time() - started:.0f} s, {os.cpu_count()} cores, "
+          f"{args.jobs} jobs)")
 
 
 if __name__ == "__main__":
