@@ -25,28 +25,8 @@ LocalMappingJob::LocalMappingJob(const Map& map, uint64_t generation)
 void LocalMappingJob::Run(const Config& config) {
   unmark_min_dynamic_frames_ = config.tracking.remark_frames;
   // Algorithm 1 over the window first: local BA then uses only the points that stayed marked.
-  if (config.static_points.enabled) {
-    const WindowStaticPointsStats spd = DetermineStaticPointsInWindow(config, &window_);
-    status_.spd_ran = spd.ran;
-    status_.spd_keyframes = spd.keyframes;
-    status_.spd_points = spd.points;
-    status_.spd_edges = spd.edges;
-    status_.spd_culled_edges = spd.culled_edges;
-    status_.spd_unmarked = spd.unmarked;
-    status_.spd_graph_ms = spd.graph_ms;
-    status_.spd_culling_ms = spd.culling_ms;
-    status_.spd_components_ms = spd.components_ms;
-    status_.spd_ms = spd.total_ms;
-  }
-  const LocalBaStats ba = LocalBundleAdjustment(config, &window_);
-  status_.ran = ba.ran;
-  status_.ba_keyframes = ba.keyframes;
-  status_.ba_points = ba.points;
-  status_.ba_measurements = ba.measurements;
-  status_.ba_outliers = ba.outliers;
-  status_.ba_iterations = ba.iterations;
-  status_.ba_rejected = ba.rejected;
-  status_.ba_ms = ba.time_ms;
+  if (config.static_points.enabled) status_.spd = DetermineStaticPointsInWindow(config, &window_);
+  status_.ba = LocalBundleAdjustment(config, &window_);
 }
 
 void LocalMappingJob::Apply(Map* map) const {

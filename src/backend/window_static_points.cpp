@@ -100,13 +100,7 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
   }
   stats.ran = true;
   stats.keyframes = static_cast<int>(keyframes.size());
-  stats.points = result.stats.points;
-  stats.edges = result.stats.edges;
-  stats.measurements = result.stats.measurements;
-  stats.culled_edges = result.stats.culled_edges;
-  stats.graph_ms = result.stats.graph_ms;
-  stats.culling_ms = result.stats.culling_ms;
-  stats.components_ms = result.stats.components_ms;
+  stats.graph = result.stats;
   stats.total_ms = total.ElapsedMs();
   return stats;
 }

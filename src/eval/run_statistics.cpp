@@ -31,9 +31,9 @@ std::string StatusCsvRow(const FrameResult& r) {
                 c.map_points, c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
                 t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms, t.tracking_ms,
                 r.backend_thread.backlog, r.backend_thread.delivered ? 1 : 0,
-                r.backend.window_keyframes, r.backend.ba_points, r.backend.ba_outliers,
-                r.backend.ba_iterations, r.backend.ba_ms, r.backend.spd_points,
-                r.backend.spd_culled_edges, r.backend.spd_unmarked, r.backend.spd_ms);
+                r.backend.window_keyframes, r.backend.ba.points, r.backend.ba.outliers,
+                r.backend.ba.iterations, r.backend.ba.time_ms, r.backend.spd.graph.points,
+                r.backend.spd.graph.culled_edges, r.backend.spd.unmarked, r.backend.spd.total_ms);
   return buffer;
 }
 
@@ -49,7 +49,7 @@ void RunSummary::Add(const FrameResult& result) {
     // A run reported late (threaded) did not cost this frame.
     const bool own_run = !result.backend_thread.delivered;
     frame_ms_.push_back(result.times.total_ms +
-                        (own_run ? result.backend.ba_ms + result.backend.spd_ms : 0.0));
+                        (own_run ? result.backend.ba.time_ms + result.backend.spd.total_ms : 0.0));
     tracking_ms_.push_back(result.times.tracking_ms);
   }
   max_backlog_ = std::max(max_backlog_, result.backend_thread.backlog);
@@ -57,34 +57,34 @@ void RunSummary::Add(const FrameResult& result) {
 }
 
 void RunSummary::AddBackEnd(const BackEndStatus& status) {
-  if (status.ran || status.spd_ran) backend_.push_back(status);
+  if (status.ba.ran || status.spd.ran) backend_.push_back(status);
 }
 
 double RunSummary::BackEndQuantile(const std::string& field, double fraction) const {
   using Getter = double (*)(const BackEndStatus&);
   static const std::map<std::string, Getter> kFields = {
-      {"ba_ms", [](const BackEndStatus& b) { return b.ba_ms; }},
-      {"ba_points", [](const BackEndStatus& b) { return double(b.ba_points); }},
-      {"ba_keyframes", [](const BackEndStatus& b) { return double(b.ba_keyframes); }},
-      {"ba_measurements", [](const BackEndStatus& b) { return double(b.ba_measurements); }},
-      {"ba_outliers", [](const BackEndStatus& b) { return double(b.ba_outliers); }},
-      {"ba_iterations", [](const BackEndStatus& b) { return double(b.ba_iterations); }},
-      {"spd_ms", [](const BackEndStatus& b) { return b.spd_ms; }},
-      {"spd_graph_ms", [](const BackEndStatus& b) { return b.spd_graph_ms; }},
-      {"spd_culling_ms", [](const BackEndStatus& b) { return b.spd_culling_ms; }},
-      {"spd_components_ms", [](const BackEndStatus& b) { return b.spd_components_ms; }},
-      {"spd_keyframes", [](const BackEndStatus& b) { return double(b.spd_keyframes); }},
-      {"spd_points", [](const BackEndStatus& b) { return double(b.spd_points); }},
-      {"spd_edges", [](const BackEndStatus& b) { return double(b.spd_edges); }},
-      {"spd_culled_edges", [](const BackEndStatus& b) { return double(b.spd_culled_edges); }},
-      {"spd_unmarked", [](const BackEndStatus& b) { return double(b.spd_unmarked); }},
+      {"ba_ms", [](const BackEndStatus& b) { return b.ba.time_ms; }},
+      {"ba_points", [](const BackEndStatus& b) { return double(b.ba.points); }},
+      {"ba_keyframes", [](const BackEndStatus& b) { return double(b.ba.keyframes); }},
+      {"ba_measurements", [](const BackEndStatus& b) { return double(b.ba.measurements); }},
+      {"ba_outliers", [](const BackEndStatus& b) { return double(b.ba.outliers); }},
+      {"ba_iterations", [](const BackEndStatus& b) { return double(b.ba.iterations); }},
+      {"spd_ms", [](const BackEndStatus& b) { return b.spd.total_ms; }},
+      {"spd_graph_ms", [](const BackEndStatus& b) { return b.spd.graph.graph_ms; }},
+      {"spd_culling_ms", [](const BackEndStatus& b) { return b.spd.graph.culling_ms; }},
+      {"spd_components_ms", [](const BackEndStatus& b) { return b.spd.graph.components_ms; }},
+      {"spd_keyframes", [](const BackEndStatus& b) { return double(b.spd.keyframes); }},
+      {"spd_points", [](const BackEndStatus& b) { return double(b.spd.graph.points); }},
+      {"spd_edges", [](const BackEndStatus& b) { return double(b.spd.graph.edges); }},
+      {"spd_culled_edges", [](const BackEndStatus& b) { return double(b.spd.graph.culled_edges); }},
+      {"spd_unmarked", [](const BackEndStatus& b) { return double(b.spd.unmarked); }},
   };
   const auto getter = kFields.find(field);
   if (getter == kFields.end()) throw std::invalid_argument("unknown back-end field " + field);
   const bool spd_field = field.rfind("spd_", 0) == 0;  // over the runs of that stage only
   std::vector<double> values;
   for (const BackEndStatus& b : backend_) {
-    if (spd_field ? b.spd_ran : b.ran) values.push_back(getter->second(b));
+    if (spd_field ? b.spd.ran : b.ba.ran) values.push_back(getter->second(b));
   }
   return Quantile(values, fraction);
 }

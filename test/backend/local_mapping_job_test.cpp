@@ -73,7 +73,7 @@ TEST(LocalMappingJob, CopyRunApplyEqualsTheRunInPlace) {
   EXPECT_EQ(job.generation(), 7u);
   EXPECT_EQ(job.newest_keyframe_id(), kKeyFrames - 1);
   EXPECT_TRUE(job.moved_keyframes());
-  EXPECT_GT(job.status().spd_unmarked, 0);  // the moving cluster
+  EXPECT_GT(job.status().spd.unmarked, 0);  // the moving cluster
   for (int k = 0; k < kKeyFrames; ++k) {
     EXPECT_TRUE(live.keyframes()[k].T_world_camera.matrix() ==
                 in_place.keyframes()[k].T_world_camera.matrix())
@@ -86,7 +86,7 @@ TEST(LocalMappingJob, CopyRunApplyEqualsTheRunInPlace) {
     EXPECT_EQ(live.Find(id)->dynamic_frames, in_place.Find(id)->dynamic_frames) << id;
     unmarked += !live.Find(id)->marked;
   }
-  EXPECT_EQ(unmarked, job.status().spd_unmarked);
+  EXPECT_EQ(unmarked, job.status().spd.unmarked);
 }
 
 TEST(LocalMappingJob, ApplySkipsWhatLeftTheMapMeanwhile) {

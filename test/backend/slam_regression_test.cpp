@@ -26,8 +26,8 @@ RunResult RunSlam(const Rendered& rendered, bool backend) {
   const Trajectory estimated =
       test::TrackAll(&slam, rendered.frames, [&out](size_t, const FrameResult& result) {
         out.with_pose += result.has_pose;
-        out.backend_runs += result.backend.ran;
-        out.rejected += result.backend.ba_rejected;
+        out.backend_runs += result.backend.ba.ran;
+        out.rejected += result.backend.ba.rejected;
       });
   out.ate_m = test::AteRmse(estimated, rendered.groundtruth);
   out.refined_ate_m = test::AteRmse(slam.RefinedPoses(), rendered.groundtruth);

@@ -44,13 +44,13 @@ RunResult RunSequence(BackEndMode mode, std::chrono::milliseconds gap) {
       test::TrackAll(&slam, room.frames, [&](size_t, const FrameResult& r) {
         out.with_pose += r.has_pose;
         out.keyframes += r.keyframe;
-        out.runs += r.backend.ran;
+        out.runs += r.backend.ba.ran;
         out.delivered += r.backend_thread.delivered;
         out.max_backlog = std::max(out.max_backlog, r.backend_thread.backlog);
         std::this_thread::sleep_for(gap);
       });
   slam.WaitForBackEnd();
-  for (const BackEndStatus& run : slam.TakeUnreportedRuns()) out.runs += run.ran;
+  for (const BackEndStatus& run : slam.TakeUnreportedRuns()) out.runs += run.ba.ran;
   out.ate_m = test::AteRmse(estimated, room.groundtruth);
   out.refined_ate_m = test::AteRmse(slam.RefinedPoses(), room.groundtruth);
   return out;
@@ -104,7 +104,7 @@ TEST(SlamThreads, HeldBackEndQueuesKeyFramesAndCoalescesThem) {
   slam.WaitForBackEnd();  // releases the hold
   const std::vector<BackEndStatus> runs = slam.TakeUnreportedRuns();
   ASSERT_EQ(runs.size(), 1u);  // four keyframes, one run for the newest window
-  EXPECT_TRUE(runs[0].ran);
+  EXPECT_TRUE(runs[0].ba.ran);
   EXPECT_EQ(runs[0].window_keyframes, 4);
   EXPECT_TRUE(slam.TakeUnreportedRuns().empty());  // each run is reported once
   const FrameResult after = slam.ProcessFrame(test::SharedSequence(kScene, kFrames).frames[next]);
@@ -120,7 +120,7 @@ TEST(SlamThreads, CompletedRunIsReportedByTheNextFrame) {
   slam.WaitForBackEnd();  // releases the hold: one run over the window of three, completed
   const FrameResult r = slam.ProcessFrame(test::SharedSequence(kScene, kFrames).frames[next]);
   EXPECT_TRUE(r.backend_thread.delivered);
-  EXPECT_TRUE(r.backend.ran);
+  EXPECT_TRUE(r.backend.ba.ran);
   EXPECT_EQ(r.backend.window_keyframes, 3);
   slam.WaitForBackEnd();
   for (const BackEndStatus& run : slam.TakeUnreportedRuns()) {
@@ -156,7 +156,9 @@ TEST(SlamThreads, ResetRightAfterKeyFramesNeverReportsOldRuns) {
     EXPECT_FALSE(first.backend_thread.delivered) << "round " << round;
   }
   slam.WaitForBackEnd();
-  for (const BackEndStatus& run : slam.TakeUnreportedRuns()) EXPECT_FALSE(run.ran);  // 1 keyframe
+  for (const BackEndStatus& run : slam.TakeUnreportedRuns()) {
+    EXPECT_FALSE(run.ba.ran);  // 1 keyframe
+  }
 }
 
 // Destroys `slam` on another thread; fails (and leaks the thread) when that takes over 60 s.
@@ -192,7 +194,7 @@ TEST(SlamThreads, SynchronousModeReportsEachRunWithItsKeyFrame) {
   slam.HoldBackEnd(true);  // no effect
   int next = 0;
   const FrameResult r = FeedKeyFrames(&slam, 3, &next);
-  EXPECT_TRUE(r.backend.ran);  // a window of three: static points seen in two or more
+  EXPECT_TRUE(r.backend.ba.ran);  // a window of three: static points seen in two or more
   EXPECT_FALSE(r.backend_thread.threaded);
   EXPECT_EQ(r.backend_thread.backlog, 0);
   slam.WaitForBackEnd();
@@ -312,7 +314,7 @@ TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
     }
     const FrameResult r = slam.ProcessFrame(walking.frames[next]);
     with_pose += r.has_pose;
-    delivered += r.backend_thread.delivered && r.backend.ran;
+    delivered += r.backend_thread.delivered && r.backend.ba.ran;
     if (r.has_pose) estimated.push_back({r.stamp_s, r.T_world_camera});
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
     // The backlog fell below the keyframes queued since the start: the run took them and copied
@@ -327,7 +329,7 @@ TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
   slam.WaitForBackEnd();
   EXPECT_GT(reader->snapshots(), 0);
   reader.reset();
-  for (const BackEndStatus& run : slam.TakeUnreportedRuns()) delivered += run.ran;
+  for (const BackEndStatus& run : slam.TakeUnreportedRuns()) delivered += run.ba.ran;
   EXPECT_GE(in_flight, 10);
   EXPECT_GE(delivered, 1);
   EXPECT_EQ(with_pose, kWalkingFrames);

@@ -82,10 +82,10 @@ TEST(WindowStaticPoints, UnmarksASlowBoxThatTwoKeyFramesCannotSee) {
     const WindowStaticPointsStats stats = DetermineStaticPointsInWindow(config, &window.map);
     ASSERT_TRUE(stats.ran);
     EXPECT_EQ(stats.keyframes, 12);
-    EXPECT_EQ(stats.points, 240);
+    EXPECT_EQ(stats.graph.points, 240);
     EXPECT_EQ(CountMarked(window.map, window.moving_ids), 0) << "seed " << seed;
     EXPECT_GE(CountMarked(window.map, window.static_ids), 198) << "seed " << seed;
-    EXPECT_GT(stats.culled_edges, 0);
+    EXPECT_GT(stats.graph.culled_edges, 0);
     EXPECT_EQ(stats.unmarked, 240 - CountMarked(window.map, window.static_ids) -
                                   CountMarked(window.map, window.moving_ids));
   }
@@ -108,7 +108,7 @@ TEST(WindowStaticPoints, UnmarkedPointsStayOutAndNeedRemarkFramesToComeBack) {
   Scene scene = MakeScene(12, 0.01, 4);
   for (PointId id : scene.moving_ids) scene.map.Find(id)->marked = false;
   const WindowStaticPointsStats stats = DetermineStaticPointsInWindow(config, &scene.map);
-  EXPECT_EQ(stats.points, 200);  // only marked points enter (Algorithm 1: the static set)
+  EXPECT_EQ(stats.graph.points, 200);  // only marked points enter (Algorithm 1: the static set)
   EXPECT_LE(stats.unmarked, 2);
 
   Scene moving = MakeScene(12, 0.01, 5);

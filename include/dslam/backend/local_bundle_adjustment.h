@@ -20,36 +20,15 @@
 // applied: with a person filling most of the window, the window could follow the person.
 
 #include "dslam/core/config.h"
+#include "dslam/tracking/backend_status.h"
 #include "dslam/tracking/map.h"
 
 namespace dslam {
 
-/// What one local bundle adjustment did.
-struct LocalBaStats {
-  bool ran = false;  ///< false: too few keyframes or points (nothing changed)
-  /// [-] window keyframes after the oldest `ba_fixed_keyframes`: free, except those that
-  /// measure fewer than 10 optimised points (also held fixed)
-  int keyframes = 0;
-  /// [-] `ba_fixed_keyframes`, the oldest window keyframes held fixed (keyframes held for too
-  /// few points are counted in `keyframes`, not here)
-  int fixed_keyframes = 0;
-  int points = 0;        ///< [-] map points optimised
-  int measurements = 0;  ///< [-] RGB-D measurements (residuals) in the first round
-  int outliers = 0;      ///< [-] measurements left out by the final chi-square test
-  int iterations = 0;    ///< [-] solver iterations, both rounds
-  double time_ms = 0.0;  ///< [ms] wall time
-  /// [m], [deg] largest move of a keyframe's camera centre and rotation from the front end's pose
-  double largest_correction_m = 0.0, largest_correction_deg = 0.0;
-  /// [-] largest squared Mahalanobis size of a correction under the front end's pose information
-  double largest_correction_chi2 = 0.0;
-  /// The solution moved a keyframe further than `ba_max_correction_chi2` (under its front-end
-  /// pose information), `ba_max_correction_m` or `ba_max_correction_deg` allow: not applied.
-  bool rejected = false;
-};
-
 /// Optimises the keyframe window of `map` in place (keyframe poses, their measurements' poses and
 /// point positions) with config.backend and config.pose's 3-dof widths; see the top of this file.
 /// Deterministic (one solver thread).
+/// Returns what it did (LocalBaStats, tracking/backend_status.h).
 LocalBaStats LocalBundleAdjustment(const Config& config, Map* map);
 
 }  // namespace dslam

@@ -49,7 +49,7 @@ class LocalMappingJob {
   /// Id of the newest keyframe of the copied window (-1: none).
   int newest_keyframe_id() const { return newest_keyframe_id_; }
   /// Whether Apply changed keyframe poses (local BA ran and was applied).
-  bool moved_keyframes() const { return status_.ran && !status_.ba_rejected; }
+  bool moved_keyframes() const { return status_.ba.ran && !status_.ba.rejected; }
 
  private:
   struct PointBefore {

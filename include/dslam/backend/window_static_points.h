@@ -16,28 +16,15 @@
 // measurement only needs its keyframe's rotation (the translation cancels).
 
 #include "dslam/core/config.h"
+#include "dslam/tracking/backend_status.h"
 #include "dslam/tracking/map.h"
 
 namespace dslam {
 
-/// What one back-end static point determination did; counts and times of the paper's Table 7.
-struct WindowStaticPointsStats {
-  bool ran = false;            ///< false: too few keyframes or points (nothing changed)
-  int keyframes = 0;           ///< [-] covisible window keyframes whose measurements were used
-  int points = 0;              ///< [-] marked points checked (graph vertices)
-  int edges = 0;               ///< [-] graph edges
-  int measurements = 0;        ///< [-] point-correlation measurements z_ijk
-  int culled_edges = 0;        ///< [-] edges found inconsistent
-  int unmarked = 0;            ///< [-] points that lost their mark
-  double graph_ms = 0.0;       ///< [ms] Delaunay triangulation
-  double culling_ms = 0.0;     ///< [ms] measurements and edge tests
-  double components_ms = 0.0;  ///< [ms] components, volumes and labels
-  double total_ms = 0.0;       ///< [ms] everything, collecting the input included
-};
-
 /// Runs Algorithm 1 on the window of `map` for its newest keyframe and unmarks the points found
 /// moving (see the top of this file). Uses config.static_points for the test and config.backend
-/// for the window. Deterministic.
+/// for the window. Deterministic. Returns what it did (WindowStaticPointsStats,
+/// tracking/backend_status.h).
 WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map* map);
 
 }  // namespace dslam

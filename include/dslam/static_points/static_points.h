@@ -13,29 +13,13 @@
 #include "dslam/static_points/correlation_problem.h"
 #include "dslam/static_points/point_graph.h"
 #include "dslam/static_points/segmentation.h"
+#include "dslam/static_points/static_points_stats.h"
 
 namespace dslam {
 
 /// With fewer matched points with depth (or window points) the front and back end skip static
 /// point determination: fewer than 4 points span no tetrahedron (3D Delaunay cell).
 constexpr int kMinGraphPoints = 8;
-
-/// Wall-clock time per step [ms] and counts of one DetermineStaticPoints call.
-struct StaticPointsStats {
-  double graph_ms = 0.0;       ///< [ms] Delaunay triangulation
-  double culling_ms = 0.0;     ///< [ms] measurements, solves and culling
-  double components_ms = 0.0;  ///< [ms] connected components and volumes
-  double total_ms = 0.0;       ///< [ms] everything
-  int points = 0;              ///< [-] input points
-  int edges = 0;               ///< [-] graph edges
-  int culled_edges = 0;        ///< [-] inconsistent edges removed
-  int measurements = 0;        ///< [-] point-correlation measurements z_ijk
-  int rounds = 0;              ///< [-] least-squares rounds (0 for the direct test)
-  int components = 0;          ///< [-] connected components (singletons included)
-  int static_points = 0;       ///< [-] points labelled kStatic
-  int dynamic_points = 0;      ///< [-] points labelled kDynamic
-  int isolated_points = 0;     ///< [-] points labelled kIsolated
-};
 
 /// Everything DetermineStaticPoints found.
 struct StaticPointsResult {

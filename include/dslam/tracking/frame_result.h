@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "dslam/tracking/backend_status.h"
 #include "dslam/tracking/map.h"
 
 namespace dslam {
@@ -82,30 +83,6 @@ struct StageTimes {
   double tracking_ms = 0.0;
 };
 
-/// What the back end did after a keyframe (see dslam/backend/slam.h); all zero otherwise.
-struct BackEndStatus {
-  bool ran = false;          ///< local bundle adjustment ran after this frame
-  int window_keyframes = 0;  ///< keyframes in the window
-  int ba_keyframes = 0;      ///< keyframes whose poses local BA optimised
-  int ba_points = 0;         ///< map points it optimised
-  int ba_measurements = 0;   ///< RGB-D measurements (residuals) it used
-  int ba_outliers = 0;       ///< measurements it dropped (chi-square)
-  int ba_iterations = 0;     ///< solver iterations
-  bool ba_rejected = false;  ///< the solution moved a keyframe too far and was not applied
-  double ba_ms = 0.0;        ///< [ms] local BA wall time
-  // Back-end static point determination (window_static_points.h), before local BA.
-  bool spd_ran = false;            ///< it ran after this frame
-  int spd_keyframes = 0;           ///< covisible keyframes whose measurements it used
-  int spd_points = 0;              ///< marked points it checked
-  int spd_edges = 0;               ///< graph edges
-  int spd_culled_edges = 0;        ///< edges found inconsistent
-  int spd_unmarked = 0;            ///< points that lost their mark
-  double spd_graph_ms = 0.0;       ///< [ms] Delaunay graph
-  double spd_culling_ms = 0.0;     ///< [ms] edge tests
-  double spd_components_ms = 0.0;  ///< [ms] components and labels
-  double spd_ms = 0.0;             ///< [ms] its whole wall time
-};
-
 /// Everything the odometry reports about one frame.
 struct FrameResult {
   int frame_index = 0;   ///< 0-based count of frames since the last reset
@@ -121,7 +98,7 @@ struct FrameResult {
   std::string message;    ///< why the frame was lost / reset, empty otherwise
   FrameCounts counts;
   StageTimes times;
-  BackEndStatus backend;              ///< filled by Slam after keyframes
+  BackEndStatus backend;              ///< filled by Slam after keyframes (backend_status.h)
   std::vector<ObservedPoint> points;  ///< matched map points with their labels
   std::vector<GraphEdgeView> edges;   ///< front-end graph (kept and culled edges)
   /// Threaded mode: which back-end run `backend` is, and the back end's backlog.
