@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 #include <stdexcept>
+
+#include "dslam/eval/status_table.h"
 
 namespace dslam {
 
@@ -12,9 +13,8 @@ std::string StatusCsvHeader() {
          "candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
          "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms,"
-         "tracking_ms,backlog,backend_delivered,"
-         "window_keyframes,ba_points,ba_outliers,ba_iterations,ba_ms,"
-         "spd_points,spd_culled_edges,spd_unmarked,spd_ms";
+         "tracking_ms,backlog,backend_delivered," +
+         BackEndCsvHeader();
 }
 
 std::string StatusCsvRow(const FrameResult& r) {
@@ -22,19 +22,15 @@ std::string StatusCsvRow(const FrameResult& r) {
   const StageTimes& t = r.times;
   char buffer[640];
   std::snprintf(buffer, sizeof(buffer),
-                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%."
-                "3f,%.3f,%d,%d,"
-                "%d,%d,%d,%d,%.3f,%d,%d,%d,%.3f",
+                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,"
+                "%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,",
                 r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
                 c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
                 c.candidate_points, c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges,
                 c.map_points, c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
                 t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms, t.tracking_ms,
-                r.backend_thread.backlog, r.backend_thread.delivered ? 1 : 0,
-                r.backend.window_keyframes, r.backend.ba.points, r.backend.ba.outliers,
-                r.backend.ba.iterations, r.backend.ba.time_ms, r.backend.spd.graph.points,
-                r.backend.spd.graph.culled_edges, r.backend.spd.unmarked, r.backend.spd.total_ms);
-  return buffer;
+                r.backend_thread.backlog, r.backend_thread.delivered ? 1 : 0);
+  return buffer + BackEndCsvValues(r.backend);
 }
 
 void RunSummary::Add(const FrameResult& result) {
@@ -61,32 +57,7 @@ void RunSummary::AddBackEnd(const BackEndStatus& status) {
 }
 
 double RunSummary::BackEndQuantile(const std::string& field, double fraction) const {
-  using Getter = double (*)(const BackEndStatus&);
-  static const std::map<std::string, Getter> kFields = {
-      {"ba_ms", [](const BackEndStatus& b) { return b.ba.time_ms; }},
-      {"ba_points", [](const BackEndStatus& b) { return double(b.ba.points); }},
-      {"ba_keyframes", [](const BackEndStatus& b) { return double(b.ba.keyframes); }},
-      {"ba_measurements", [](const BackEndStatus& b) { return double(b.ba.measurements); }},
-      {"ba_outliers", [](const BackEndStatus& b) { return double(b.ba.outliers); }},
-      {"ba_iterations", [](const BackEndStatus& b) { return double(b.ba.iterations); }},
-      {"spd_ms", [](const BackEndStatus& b) { return b.spd.total_ms; }},
-      {"spd_graph_ms", [](const BackEndStatus& b) { return b.spd.graph.graph_ms; }},
-      {"spd_culling_ms", [](const BackEndStatus& b) { return b.spd.graph.culling_ms; }},
-      {"spd_components_ms", [](const BackEndStatus& b) { return b.spd.graph.components_ms; }},
-      {"spd_keyframes", [](const BackEndStatus& b) { return double(b.spd.keyframes); }},
-      {"spd_points", [](const BackEndStatus& b) { return double(b.spd.graph.points); }},
-      {"spd_edges", [](const BackEndStatus& b) { return double(b.spd.graph.edges); }},
-      {"spd_culled_edges", [](const BackEndStatus& b) { return double(b.spd.graph.culled_edges); }},
-      {"spd_unmarked", [](const BackEndStatus& b) { return double(b.spd.unmarked); }},
-  };
-  const auto getter = kFields.find(field);
-  if (getter == kFields.end()) throw std::invalid_argument("unknown back-end field " + field);
-  const bool spd_field = field.rfind("spd_", 0) == 0;  // over the runs of that stage only
-  std::vector<double> values;
-  for (const BackEndStatus& b : backend_) {
-    if (spd_field ? b.spd.ran : b.ba.ran) values.push_back(getter->second(b));
-  }
-  return Quantile(values, fraction);
+  return Quantile(BackEndStageValues(backend_, field), fraction);
 }
 
 double RunSummary::MedianMs(const std::string& stage) const {

@@ -125,6 +125,8 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
   s.mapping_ms = t.mapping_ms;
   s.total_ms = t.total_ms;
   s.tracking_ms = t.tracking_ms;
+  // The back-end fields of FrameStatus.msg, in its order (BackEndStatus::Fields() lists them;
+  // test/eval/status_table_test.cpp checks the message against that table).
   const BackEndStatus& b = r.backend;
   s.backend_ran = b.ba.ran;
   s.ba_rejected = b.ba.rejected;

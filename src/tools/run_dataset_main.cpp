@@ -24,6 +24,7 @@
 #include "dslam/eval/quantile.h"
 #include "dslam/eval/run_statistics.h"
 #include "dslam/eval/segmentation_score.h"
+#include "dslam/eval/status_table.h"
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
@@ -92,12 +93,7 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
       .AddNumber("p95_tracking_ms", summary.TrackingQuantile(0.95), kDigits)
       .AddInteger("backend_runs", summary.backend_runs())
       .AddInteger("max_backlog", summary.max_backlog());
-  for (const char* field : {"ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations",
-                            "spd_ms", "spd_graph_ms", "spd_culling_ms", "spd_components_ms",
-                            "spd_points", "spd_edges", "spd_culled_edges", "spd_unmarked"}) {
-    json.AddNumber(std::string("median_") + field, summary.BackEndQuantile(field, 0.5), kDigits)
-        .AddNumber(std::string("p95_") + field, summary.BackEndQuantile(field, 0.95), kDigits);
-  }
+  dslam::AddBackEndQuantiles(summary, kDigits, &json);
   if (!scored) return json;
   json.AddNumber("dynamic_precision", score.Precision(), kDigits)
       .AddNumber("dynamic_recall", score.Recall(), kDigits)

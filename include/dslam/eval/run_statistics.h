@@ -56,10 +56,10 @@ class RunSummary {
   /// Keyframes after which the back end ran (local BA or back-end static point determination).
   int backend_runs() const { return static_cast<int>(backend_.size()); }
 
-  /// The `fraction`-quantile of a BackEndStatus field ("ba_ms", "ba_points", "ba_keyframes",
-  /// "ba_measurements", "ba_outliers", "ba_iterations", or "spd_" + ms, graph_ms, culling_ms,
-  /// components_ms, keyframes, points, edges, culled_edges, unmarked) over the keyframes after
-  /// which that stage (local BA, or back-end static point determination for "spd_") ran.
+  /// The `fraction`-quantile of a numeric BackEndStatus field of local BA or of the window's
+  /// static point determination, named as in BackEndStatus::Fields() ("ba_ms", "spd_points",
+  /// ...), over the keyframes after which that stage ran (BackEndStageValues,
+  /// eval/status_table.h; throws std::invalid_argument for other names).
   double BackEndQuantile(const std::string& field, double fraction) const;
 
   /// [-] Share of matched-point observations labelled dynamic (unmarked), over all frames: on a

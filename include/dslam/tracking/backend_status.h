@@ -3,7 +3,11 @@
 // adjustment, backend/local_bundle_adjustment.h; static point determination over the window,
 // backend/window_static_points.h) and BackEndStatus, which embeds them. Plain structs here, in
 // tracking, so that FrameResult (frame_result.h) carries them without the back end's headers.
+// BackEndStatus::Fields() is the one table of the reported fields: the status CSV columns, the
+// summary quantiles (eval/status_table.h) and the back-end fields of msg/FrameStatus.msg
+// (checked by test/eval/status_table_test.cpp) follow it.
 
+#include "dslam/core/status_field.h"
 #include "dslam/static_points/static_points_stats.h"
 
 namespace dslam {
@@ -47,6 +51,47 @@ struct BackEndStatus {
   int window_keyframes = 0;     ///< [-] keyframes in the window
   WindowStaticPointsStats spd;  ///< static point determination over the window, before local BA
   LocalBaStats ba;              ///< local bundle adjustment; ba.ran: it ran after this frame
+
+  /// The reported fields, each visited as v(StatusFieldInfo, value) in the order of the status
+  /// CSV columns and of FrameStatus.msg; a field's summary_rank orders the summary's quantile
+  /// keys. A new field is one entry here (and, for the message, a line in FrameStatus.msg and
+  /// one in ros/frame_publisher.cpp).
+  template <typename Self, typename Visitor>
+  static void Fields(Self& s, Visitor&& v) {
+    constexpr StatusStage kBa = StatusStage::kLocalBa, kSpd = StatusStage::kWindowSpd;
+    constexpr unsigned kCsv = kStatusCsv, kMsg = kStatusMessage, kBoth = kCsv | kMsg;
+    v(StatusField("backend_ran", "-", kBa, kMsg, -1, "ran after this frame"), s.ba.ran);
+    v(StatusField("ba_rejected", "-", kBa, kMsg, -1,
+                  "its solution moved a keyframe too far and was not applied"),
+      s.ba.rejected);
+    v(StatusField("window_keyframes", "-", StatusStage::kWindow, kBoth, -1,
+                  "keyframes in the window"),
+      s.window_keyframes);
+    v(StatusField("ba_keyframes", "-", kBa, 0, 1, "keyframes whose poses it optimised"),
+      s.ba.keyframes);
+    v(StatusField("ba_points", "-", kBa, kBoth, 2, "map points optimised"), s.ba.points);
+    v(StatusField("ba_measurements", "-", kBa, 0, -1, "RGB-D measurements (residuals) it used"),
+      s.ba.measurements);
+    v(StatusField("ba_outliers", "-", kBa, kBoth, 3, "measurements the chi-square test left out"),
+      s.ba.outliers);
+    v(StatusField("ba_iterations", "-", kBa, kBoth, 4, "solver iterations"), s.ba.iterations);
+    v(StatusField("ba_ms", "ms", kBa, kBoth, 0, "its wall-clock time"), s.ba.time_ms);
+    v(StatusField("spd_ran", "-", kSpd, kMsg, -1, "ran after this frame"), s.spd.ran);
+    v(StatusField("spd_keyframes", "-", kSpd, 0, -1,
+                  "covisible window keyframes whose measurements it used"),
+      s.spd.keyframes);
+    v(StatusField("spd_points", "-", kSpd, kBoth, 9, "marked points checked"), s.spd.graph.points);
+    v(StatusField("spd_edges", "-", kSpd, 0, 10, "graph edges"), s.spd.graph.edges);
+    v(StatusField("spd_culled_edges", "-", kSpd, kBoth, 11, "graph edges found inconsistent"),
+      s.spd.graph.culled_edges);
+    v(StatusField("spd_unmarked", "-", kSpd, kBoth, 12, "points that lost their mark"),
+      s.spd.unmarked);
+    v(StatusField("spd_graph_ms", "ms", kSpd, 0, 6, "Delaunay graph"), s.spd.graph.graph_ms);
+    v(StatusField("spd_culling_ms", "ms", kSpd, 0, 7, "edge tests"), s.spd.graph.culling_ms);
+    v(StatusField("spd_components_ms", "ms", kSpd, 0, 8, "components and labels"),
+      s.spd.graph.components_ms);
+    v(StatusField("spd_ms", "ms", kSpd, kBoth, 5, "its whole wall-clock time"), s.spd.total_ms);
+  }
 };
 
 }  // namespace dslam
