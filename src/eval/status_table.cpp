@@ -82,6 +82,26 @@ class StageValueReader {
   double value_ = 0.0;
 };
 
+// What a stage's fields describe, as the docs name it.
+const char* StageLabel(StatusStage stage) {
+  switch (stage) {
+    case StatusStage::kWindow:
+      return "back end";
+    case StatusStage::kLocalBa:
+      return "local BA";
+    case StatusStage::kWindowSpd:
+      return "window static point determination";
+  }
+  return "";
+}
+
+// "stage: meaning [unit]" (no unit for "-").
+std::string Meaning(const StatusFieldInfo& info) {
+  std::string meaning = std::string(StageLabel(info.stage)) + ": " + info.doc;
+  if (std::string(info.unit) != "-") meaning += std::string(" [") + info.unit + "]";
+  return meaning;
+}
+
 }  // namespace
 
 std::string BackEndCsvHeader() {
@@ -129,6 +149,23 @@ void AddBackEndQuantiles(const RunSummary& summary, int significant_digits, Json
     json->AddNumber(kMedianPrefix + name, summary.BackEndQuantile(name, 0.5), significant_digits)
         .AddNumber(kP95Prefix + name, summary.BackEndQuantile(name, 0.95), significant_digits);
   }
+}
+
+std::string BackEndCsvMarkdown() {
+  std::string table = "| column | meaning |\n|---|---|\n";
+  for (const StatusFieldInfo& field : CsvFields()) {
+    table += "| `" + std::string(field.name) + "` | " + Meaning(field) + " |\n";
+  }
+  return table;
+}
+
+std::string BackEndSummaryMarkdown() {
+  std::string table = "| keys | meaning |\n|---|---|\n";
+  for (const StatusFieldInfo& field : SummaryFields()) {
+    table += "| `" + std::string(kMedianPrefix) + field.name + "`, `" + kP95Prefix + field.name +
+             "` | " + Meaning(field) + " |\n";
+  }
+  return table;
 }
 
 }  // namespace dslam

@@ -2,8 +2,8 @@
 // Field descriptions of the per-frame status (tracking/backend_status.h): one entry per reported
 // field names it in every output (status CSV column, summary JSON key, FrameStatus.msg field),
 // gives its unit, the stage it describes and its meaning. Visitors over a struct's Fields()
-// write the status CSV and the summary quantiles (eval/status_table.h), as the Config's Fields()
-// drive its loaders and parameter tables (config_field.h).
+// write the status CSV, the summary quantiles and their documentation (eval/status_table.h), as
+// the Config's Fields() drive its loaders and parameter tables (config_field.h).
 
 namespace dslam {
 

@@ -1,8 +1,9 @@
 #pragma once
 // The back end's part of the offline runner's outputs, written from the one field table
 // BackEndStatus::Fields() (tracking/backend_status.h): the status CSV's back-end columns, the
-// summary JSON's back-end quantiles (test/eval/status_table_test.cpp checks them and
-// msg/FrameStatus.msg against the table).
+// summary JSON's back-end quantiles, and the Markdown tables of docs/tools-and-data.md that
+// describe both (printed by `dslam_config_doc --status-columns` / `--summary-keys`, written by
+// scripts/update_readme.sh, checked by test/eval/status_table_test.cpp).
 
 #include <string>
 #include <vector>
@@ -34,5 +35,13 @@ std::vector<double> BackEndStageValues(const std::vector<BackEndStatus>& runs,
 /// Adds "median_<name>" and "p95_<name>" (RunSummary::BackEndQuantile at 0.5 and 0.95) for each
 /// of BackEndSummaryFields(), in that order, with `significant_digits` [-].
 void AddBackEndQuantiles(const RunSummary& summary, int significant_digits, JsonObject* json);
+
+/// The Markdown table of the status CSV's back-end columns, one row per column in CSV order:
+/// name, "stage: meaning [unit]". Lines end in '\n'.
+std::string BackEndCsvMarkdown();
+
+/// The Markdown table of the summary's back-end keys, one row per field in summary order: its
+/// median_ and p95_ keys, "stage: meaning [unit]". Lines end in '\n'.
+std::string BackEndSummaryMarkdown();
 
 }  // namespace dslam

@@ -4,8 +4,8 @@
 // backend/window_static_points.h) and BackEndStatus, which embeds them. Plain structs here, in
 // tracking, so that FrameResult (frame_result.h) carries them without the back end's headers.
 // BackEndStatus::Fields() is the one table of the reported fields: the status CSV columns, the
-// summary quantiles (eval/status_table.h) and the back-end fields of msg/FrameStatus.msg
-// (checked by test/eval/status_table_test.cpp) follow it.
+// summary quantiles, their docs (eval/status_table.h) and the back-end fields of
+// msg/FrameStatus.msg (checked by test/eval/status_table_test.cpp) follow it.
 
 #include "dslam/core/status_field.h"
 #include "dslam/static_points/static_points_stats.h"
