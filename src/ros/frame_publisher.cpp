@@ -8,12 +8,26 @@
 #include <tf2_eigen/tf2_eigen.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "dslam/FrameStatus.h"
 #include "dslam/ros/conversions.h"
 #include "dslam/ros/visualisation.h"
 
 namespace dslam {
 namespace ros_layer {
+
+void FillBackEndStatus(const BackEndStatus& b, dslam::FrameStatus* s) {
+  s->backend_ran = b.ba.ran;
+  s->ba_rejected = b.ba.rejected;
+  s->window_keyframes = b.window_keyframes;
+  s->ba_points = b.ba.points;
+  s->ba_outliers = b.ba.outliers;
+  s->ba_iterations = b.ba.iterations;
+  s->ba_ms = b.ba.time_ms;
+  s->spd_ran = b.spd.ran;
+  s->spd_points = b.spd.graph.points;
+  s->spd_culled_edges = b.spd.graph.culled_edges;
+  s->spd_unmarked = b.spd.unmarked;
+  s->spd_ms = b.spd.total_ms;
+}
 
 FramePublisher::FramePublisher(ros::NodeHandle& nh, const NodeConfig& config) : config_(config) {
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
@@ -125,21 +139,7 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
   s.mapping_ms = t.mapping_ms;
   s.total_ms = t.total_ms;
   s.tracking_ms = t.tracking_ms;
-  // The back-end fields of FrameStatus.msg, in its order (BackEndStatus::Fields() lists them;
-  // test/eval/status_table_test.cpp checks the message against that table).
-  const BackEndStatus& b = r.backend;
-  s.backend_ran = b.ba.ran;
-  s.ba_rejected = b.ba.rejected;
-  s.window_keyframes = b.window_keyframes;
-  s.ba_points = b.ba.points;
-  s.ba_outliers = b.ba.outliers;
-  s.ba_iterations = b.ba.iterations;
-  s.ba_ms = b.ba.time_ms;
-  s.spd_ran = b.spd.ran;
-  s.spd_points = b.spd.graph.points;
-  s.spd_culled_edges = b.spd.graph.culled_edges;
-  s.spd_unmarked = b.spd.unmarked;
-  s.spd_ms = b.spd.total_ms;
+  FillBackEndStatus(r.backend, &s);
   s.backend_delivered = r.backend_thread.delivered;
   s.backend_backlog = r.backend_thread.backlog;
   s.latency_ms = latency_ms;

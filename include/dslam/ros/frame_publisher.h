@@ -14,6 +14,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <Eigen/Geometry>
 
+#include "dslam/FrameStatus.h"
 #include "dslam/core/rgbd_frame.h"
 #include "dslam/ros/node_config.h"
 #include "dslam/tracking/frame_result.h"
@@ -28,6 +29,11 @@ struct FrameCounters {
   uint64_t dropped = 0;    ///< replaced in the queue before processing
   uint64_t rejected = 0;   ///< bad input (encoding, size, camera)
 };
+
+/// Sets the back-end fields of a FrameStatus message from `backend`: each field of
+/// BackEndStatus::Fields() marked kStatusMessage, to the message field of its name
+/// (test/ros/status_message_test.cpp checks every pair).
+void FillBackEndStatus(const BackEndStatus& backend, dslam::FrameStatus* status);
 
 /// Owns the output publishers of the odometry nodelet. Call from one thread.
 class FramePublisher {
