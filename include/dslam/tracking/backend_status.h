@@ -54,8 +54,8 @@ struct BackEndStatus {
 
   /// The reported fields, each visited as v(StatusFieldInfo, value) in the order of the status
   /// CSV columns and of FrameStatus.msg; a field's summary_rank orders the summary's quantile
-  /// keys. A new field is one entry here (and, for the message, a line in FrameStatus.msg and
-  /// one in ros/frame_publisher.cpp).
+  /// keys. A new field is one entry here (and, for the message, a line in msg/FrameStatus.msg and
+  /// one in FillBackEndStatus, ros/frame_publisher.cpp; test_eval and test_ros check both).
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
     constexpr StatusStage kBa = StatusStage::kLocalBa, kSpd = StatusStage::kWindowSpd;
