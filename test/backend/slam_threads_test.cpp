@@ -223,7 +223,7 @@ int WaitForAppliedRuns(Slam* slam) {
     const std::vector<BackEndStatus> runs = slam->TakeUnreportedRuns();
     if (!runs.empty())
       return static_cast<int>(std::count_if(runs.begin(), runs.end(),
-                                            [](const BackEndStatus& run) { return run.ran; }));
+                                            [](const BackEndStatus& run) { return run.ba.ran; }));
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   ADD_FAILURE() << "the held run was never applied";
