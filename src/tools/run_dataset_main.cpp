@@ -61,6 +61,33 @@ void Progress(size_t done, size_t total, const dslam::FrameResult& r) {
                r.times.total_ms);
 }
 
+// Prints the frames that carry a message (lost, reset, re-initialised, relocalised) to stderr,
+// once per run of frames with the same message, e.g.
+// "frame 1 (1305031229.564): lost: too few pose inliers".
+class FrameMessages {
+ public:
+  void Add(const dslam::FrameResult& r) {
+    if (r.message == last_) {
+      repeats_ += !r.message.empty();
+      return;
+    }
+    Flush();
+    last_ = r.message;
+    if (last_.empty()) return;
+    static const bool terminal = isatty(fileno(stderr));
+    std::fprintf(stderr, "%sframe %d (%.3f): %s: %s\n", terminal ? "\n" : "", r.frame_index,
+                 r.stamp_s, ToString(r.state), r.message.c_str());
+  }
+  void Flush() {
+    if (repeats_ > 0) std::fprintf(stderr, "  and %d more frames with that message\n", repeats_);
+    repeats_ = 0;
+  }
+
+ private:
+  std::string last_;
+  int repeats_ = 0;
+};
+
 // One frame's confusion counts (--segmentation).
 void WriteSegmentationRow(int frame, const dslam::SegmentationScore& s, std::ofstream* out) {
   *out << frame << ',' << s.true_dynamic() << ',' << s.false_dynamic() << ',' << s.missed_dynamic()
@@ -157,6 +184,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
   const size_t n =
       args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
   const auto start = std::chrono::steady_clock::now();
+  FrameMessages messages;
   for (size_t i = 0; i < n; ++i) {
     const dslam::RgbdFrame frame = dataset.LoadFrame(i);
     if (args.rate_hz > 0.0) {
@@ -167,8 +195,12 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
     const dslam::FrameResult r = slam->ProcessFrame(frame);
     if (out->objects) out->objects->Add(frame, r);
     Record(args, r, out);
-    if (!args.quiet) Progress(i + 1, n, r);
+    if (!args.quiet) {
+      messages.Add(r);
+      Progress(i + 1, n, r);
+    }
   }
+  messages.Flush();
   slam->WaitForBackEnd();
   for (const dslam::BackEndStatus& run : slam->TakeUnreportedRuns()) out->summary.AddBackEnd(run);
   if (!args.quiet && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
