@@ -9,34 +9,28 @@ scheduler: run it on an otherwise idle machine. Usage:
       [--frames 300] [--cache build/bench] [--bin build/ws/devel/lib/dslam]
 """
 import argparse
+import json
 import os
 import statistics
-import subprocess
 import sys
 import time
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark import BIN, REPO, render, run  # noqa: E402
+
 DYNAMIC = ["walking", "walking_static", "close_person", "walking_halfsphere", "slow_box",
            "nonrigid_sheet"]
 
 
-def run(cmd):
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if proc.returncode != 0:
-        sys.exit(f"failed: {' '.join(cmd)}\n{proc.stdout}\n{proc.stderr}")
-    return proc.stdout
-
-
 def ate_m(bin_dir, folder, trajectory):
-    out = run([os.path.join(bin_dir, "dslam_eval"), "--groundtruth",
-               os.path.join(folder, "groundtruth.txt"), "--trajectory", trajectory,
-               "--frames", os.path.join(folder, "rgb.txt"),
-               "--camera", os.path.join(folder, "camera.yaml")])
-    for line in out.splitlines():
-        if line.startswith("ATE RMSE"):
-            return float(line.split()[-1])
-    sys.exit(f"no ATE in dslam_eval's output for {trajectory}")
+    """ATE RMSE [m] of `trajectory` by bin_dir's dslam_eval (its --json output)."""
+    metrics = trajectory + ".eval.json"
+    run([os.path.join(bin_dir, "dslam_eval"), "--groundtruth",
+         os.path.join(folder, "groundtruth.txt"), "--trajectory", trajectory,
+         "--frames", os.path.join(folder, "rgb.txt"),
+         "--camera", os.path.join(folder, "camera.yaml"), "--json", metrics])
+    with open(metrics) as f:
+        return json.load(f)["ate_rmse_m"]
 
 
 def run_once(bin_dir, folder, out_base, threaded):
@@ -58,7 +52,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--frames", type=int, default=300)
     parser.add_argument("--cache", default=os.path.join(REPO, "build", "bench"))
-    parser.add_argument("--bin", default=os.path.join(WS, "devel", "lib", "dslam"))
+    parser.add_argument("--bin", default=BIN)
     args = parser.parse_args()
     print("| sequence | sync ATE [mm] | threaded ATE [mm] | median / sync | "
           "sync refined [mm] | threaded refined [mm] | median / sync |\n"
@@ -67,10 +61,7 @@ def main():
     ratios = []
     for scenario in [s for s in args.scenarios.split(",") if s]:
         for seed in [int(s) for s in args.seeds.split(",") if s]:
-            folder = os.path.join(args.cache, f"{scenario}_f{args.frames}_s{seed}")
-            if not os.path.exists(os.path.join(folder, "groundtruth.txt")):
-                run([os.path.join(args.bin, "dslam_synth"), "--scenario", scenario, "--frames",
-                     str(args.frames), "--seed", str(seed), "--output", folder])
+            folder = render(scenario, seed, args.frames, args.cache, args.bin)
             out = os.path.join(args.cache, "threaded", os.path.basename(folder))
             os.makedirs(out, exist_ok=True)
             sync = run_once(args.bin, folder, os.path.join(out, "sync"), False)
