@@ -69,7 +69,9 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   //    relocalise by descriptors.
   const bool have_initial_pose =
       SolveInitialPose(&current, T_camera_world_predicted, result.frame_index) ||
-      (!wide && SolveInitialPoseWide(&current, T_camera_world_predicted, result.frame_index)) ||
+      (!wide &&
+       RematchAndSolveInitialPose(&current, T_camera_world_predicted,
+                                  config_.tracking.wide_search_radius_px, result.frame_index)) ||
       Relocalise(&current, result.frame_index);
   result.times.initial_pose_ms = stage.Restart();
   if (!have_initial_pose) return Untracked(&current, std::move(result), "too few pose inliers");
@@ -128,13 +130,13 @@ bool Odometry::SolveInitialPose(Current* current, const Eigen::Isometry3d& T_cam
   return have_pose;
 }
 
-bool Odometry::SolveInitialPoseWide(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
-                                    int frame_index) {
+bool Odometry::RematchAndSolveInitialPose(Current* current,
+                                          const Eigen::Isometry3d& T_camera_world_guess,
+                                          double radius_px, int frame_index) {
   current->feature_taken.assign(current->features.features.size(), false);
-  current->matches = MatchLocalMap(&map_, current->local_points, current->features,
-                                   *current->frame->camera, T_camera_world_guess,
-                                   SearchWithin(config_.tracking.wide_search_radius_px, false),
-                                   &current->feature_taken);
+  current->matches =
+      MatchLocalMap(&map_, current->local_points, current->features, *current->frame->camera,
+                    T_camera_world_guess, SearchWithin(radius_px, false), &current->feature_taken);
   return SolveInitialPose(current, T_camera_world_guess, frame_index);
 }
 
@@ -164,13 +166,11 @@ bool Odometry::Relocalise(Current* current, int frame_index) {
       found.num_inliers < cfg.relocalisation_min_inlier_share * by_descriptor.size()) {
     return false;
   }
-  // The local map around the found pose, as if it had been predicted (its points were counted
-  // visible at the failed prediction already).
-  current->feature_taken.assign(current->features.features.size(), false);
-  current->matches = MatchLocalMap(
-      &map_, current->local_points, current->features, *current->frame->camera,
-      found.T_camera_world, SearchWithin(cfg.search_radius_px, false), &current->feature_taken);
-  if (!SolveInitialPose(current, found.T_camera_world, frame_index)) return false;
+  // The local map around the found pose, as if it had been predicted.
+  if (!RematchAndSolveInitialPose(current, found.T_camera_world, cfg.search_radius_px,
+                                  frame_index)) {
+    return false;
+  }
   current->relocalisation_inliers = found.num_inliers;
   current->relocalisation_matches = static_cast<int>(by_descriptor.size());
   return true;

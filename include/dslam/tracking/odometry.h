@@ -105,12 +105,14 @@ class Odometry {
   /// SolvePose and, beside it (in parallel), current->graph for the static points. False: no pose.
   bool SolveInitialPose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
                         int frame_index);
-  /// After SolveInitialPose failed on the narrow search (the prediction was off by more than
-  /// search_radius_px: a jerk of the hand, or the first frame after initialisation, which has no
-  /// velocity): the local map matched again with wide_search_radius_px around the same guess,
-  /// then SolveInitialPose. Replaces current->matches. False: no pose.
-  bool SolveInitialPoseWide(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
-                            int frame_index);
+  /// The whole local map matched again within `radius_px` [px] around `T_camera_world_guess`
+  /// (its points were counted visible at the prediction already), then SolveInitialPose.
+  /// Replaces current->matches. False: no pose. After the narrow search gave no pose (the
+  /// prediction was off by more than search_radius_px: a jerk of the hand, or the first frame
+  /// after initialisation, which has no velocity) with wide_search_radius_px; after
+  /// relocalisation around its pose.
+  bool RematchAndSolveInitialPose(Current* current, const Eigen::Isometry3d& T_camera_world_guess,
+                                  double radius_px, int frame_index);
   /// After SolveInitialPose failed (relocalisation.h): descriptor matches against the window's
   /// marked points, a RANSAC pose from them and, around it, the local map searched again and
   /// SolveInitialPose. Replaces current->matches. False: off, too few inliers, or fewer than
