@@ -3,7 +3,6 @@
 // (scripts and older builds read them), msg/FrameStatus.msg carries the table's message fields,
 // and docs/tools-and-data.md's tables are generated from it.
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -18,6 +17,7 @@
 #include "dslam/eval/run_statistics.h"
 #include "dslam/eval/status_table.h"
 #include "support/generated_block.h"
+#include "support/message_fields.h"
 
 namespace dslam {
 namespace {
@@ -113,19 +113,6 @@ TEST(StatusTable, QuantilesAreOverTheRunsOfTheirStage) {
   }
 }
 
-// The fields of a .msg file: type and name per line, comments and blank lines skipped.
-std::vector<std::pair<std::string, std::string>> MessageFields(const std::string& path) {
-  std::ifstream in(std::string(DSLAM_SOURCE_DIR) + "/" + path);
-  if (!in.good()) throw std::runtime_error("cannot read " + path);
-  std::vector<std::pair<std::string, std::string>> fields;
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream words(line.substr(0, line.find('#')));
-    std::string type, name;
-    if (words >> type >> name) fields.emplace_back(type, name);
-  }
-  return fields;
-}
-
 const char* MessageType(bool) { return "bool"; }
 const char* MessageType(int) { return "int32"; }
 const char* MessageType(double) { return "float64"; }
@@ -134,7 +121,7 @@ const char* MessageType(double) { return "float64"; }
 // threaded mode's fields (backend_delivered): the table's message fields, in its order, with
 // the types of its values.
 TEST(StatusTable, FrameStatusMessageCarriesTheTablesFields) {
-  const auto fields = MessageFields("msg/FrameStatus.msg");
+  const auto fields = test::MessageFields("msg/FrameStatus.msg");
   auto first = fields.begin(), last = fields.end();
   for (auto it = fields.begin(); it != fields.end(); ++it) {
     if (it->second == "tracking_ms") first = it + 1;

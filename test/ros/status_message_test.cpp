@@ -4,9 +4,7 @@
 // and of the table, never through the generated struct's members.
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -17,23 +15,11 @@
 #include <ros/serialization.h>
 
 #include "dslam/ros/frame_publisher.h"
+#include "support/message_fields.h"
 
 namespace dslam {
 namespace ros_layer {
 namespace {
-
-// Type and name of each field of a .msg file of the repository, in order.
-std::vector<std::pair<std::string, std::string>> MessageFields(const std::string& path) {
-  std::ifstream in(std::string(DSLAM_SOURCE_DIR) + "/" + path);
-  if (!in.good()) throw std::runtime_error("cannot read " + path);
-  std::vector<std::pair<std::string, std::string>> fields;
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream words(line.substr(0, line.find('#')));
-    std::string type, name;
-    if (words >> type >> name) fields.emplace_back(type, name);
-  }
-  return fields;
-}
 
 template <typename T>
 T Read(const std::vector<uint8_t>& bytes, size_t* at) {
@@ -51,7 +37,7 @@ std::map<std::string, double> Decode(const dslam::FrameStatus& message) {
   ros::serialization::serialize(out, message);
   std::map<std::string, double> values;
   size_t at = 0;
-  for (const auto& [type, name] : MessageFields("msg/FrameStatus.msg")) {
+  for (const auto& [type, name] : test::MessageFields("msg/FrameStatus.msg")) {
     if (type == "Header") {
       at += 3 * sizeof(uint32_t);  // seq, stamp
       const uint32_t frame_id_length = Read<uint32_t>(bytes, &at);
