@@ -4,6 +4,7 @@
 
 #include "dslam/backend/local_bundle_adjustment.h"
 #include "dslam/backend/window_static_points.h"
+#include "dslam/core/geometry.h"
 
 namespace dslam {
 
@@ -74,7 +75,7 @@ void LocalMappingJob::MoveWhatWasMadeSince(Map* map) const {
       MapPoint* point = map->Find(id);
       if (id < first_new_point_id_ || point == nullptr || !moved.insert(id).second) continue;
       point->p_world = T_new_old * point->p_world;
-      point->cov_world = T_new_old.linear() * point->cov_world * T_new_old.linear().transpose();
+      point->cov_world = RotatedCovariance(T_new_old.linear(), point->cov_world);
     }
   }
 }
