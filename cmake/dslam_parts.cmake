@@ -101,7 +101,7 @@ function(dslam_test name)
   # CCACHE_BASEDIR for the others).
   foreach(source ${T_SOURCES})
     file(STRINGS ${CMAKE_CURRENT_SOURCE_DIR}/${source} uses
-         REGEX "DSLAM_SOURCE_DIR|fuzz/replay.h|support/generated_block.h")
+         REGEX "DSLAM_SOURCE_DIR|fuzz/replay.h|support/generated_block.h|support/message_fields.h")
     if(uses)
       set_property(SOURCE ${source} APPEND PROPERTY
         COMPILE_DEFINITIONS DSLAM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
