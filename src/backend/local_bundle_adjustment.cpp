@@ -171,6 +171,33 @@ std::vector<bool> WithinChi2(const Window& window, double chi2, const Map* map =
   return inliers;
 }
 
+// The sum of squared whitened residuals e^T C_ik^-1 e of all measurements (the final chi-square
+// test's outliers included) over the degrees of freedom: 3 per measurement, less 3 per point and
+// 6 per keyframe free in the solve (not among the oldest `fixed_keyframes`, with at least
+// kMinKeyFramePoints of the `used` measurements). 0 when there are none.
+double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& used,
+                              int fixed_keyframes) {
+  double chi2 = 0.0;
+  std::vector<int> per_keyframe(window.poses.size(), 0);
+  for (size_t i = 0; i < window.measurements.size(); ++i) {
+    const Measurement& m = window.measurements[i];
+    const KeyFramePose& pose = window.poses[m.keyframe];
+    const Eigen::Vector3d e =
+        pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
+    chi2 += e.dot(m.value->covariance.inverse() * e);
+    if (used[i]) ++per_keyframe[m.keyframe];
+  }
+  int free_keyframes = 0;
+  for (size_t k = 0; k < per_keyframe.size(); ++k) {
+    if (static_cast<int>(k) >= fixed_keyframes && per_keyframe[k] >= kMinKeyFramePoints) {
+      ++free_keyframes;
+    }
+  }
+  const int dof = 3 * static_cast<int>(window.measurements.size()) -
+                  3 * static_cast<int>(window.points.size()) - 6 * free_keyframes;
+  return dof > 0 ? chi2 / dof : 0.0;
+}
+
 // Points measured in the window but not optimised (candidates, unmarked points, points of one
 // keyframe) move with the newest keyframe that measured them, p <- T_wc_new T_cw_old p, so that
 // they stay where that keyframe saw them.
@@ -263,6 +290,7 @@ LocalBaStats LocalBundleAdjustment(const Config& full_config, Map* map) {
   use = WithinChi2(window, chi2);
   stats.iterations += SolveRound(full_config, use, &window);
   const std::vector<bool> inliers = WithinChi2(window, chi2);
+  stats.chi2_per_dof = Chi2PerDegreeOfFreedom(window, use, config.ba_fixed_keyframes);
   const CorrectionSize correction = LargestCorrection(window, *map);
   stats.largest_correction_m = correction.metres;
   stats.largest_correction_deg = correction.degrees;

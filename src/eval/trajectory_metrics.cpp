@@ -137,6 +137,24 @@ Coverage ComputeCoverage(const std::vector<double>& estimated_stamps_s, double s
   return coverage;
 }
 
+FrameSteps ComputeFrameSteps(const PoseAssociation& association, double max_gap_s) {
+  std::vector<double> steps, truth_steps;
+  const Trajectory& est = association.estimated;
+  const Trajectory& gt = association.groundtruth;
+  for (size_t k = 1; k < est.size(); ++k) {
+    if (est[k].stamp_s - est[k - 1].stamp_s > max_gap_s) continue;
+    steps.push_back(
+        (est[k].T_world_camera.translation() - est[k - 1].T_world_camera.translation()).norm());
+    truth_steps.push_back(
+        (gt[k].T_world_camera.translation() - gt[k - 1].T_world_camera.translation()).norm());
+  }
+  FrameSteps result;
+  result.num_steps = steps.size();
+  result.step_m = ComputeErrorStatistics(std::move(steps));
+  result.truth_step_m = ComputeErrorStatistics(std::move(truth_steps));
+  return result;
+}
+
 TrajectoryMetrics EvaluateTrajectory(const Trajectory& estimated, const Trajectory& groundtruth,
                                      const std::vector<double>& frame_stamps_s,
                                      const TrajectoryMetricsOptions& options) {
@@ -162,6 +180,7 @@ TrajectoryMetrics EvaluateTrajectory(const Trajectory& estimated, const Trajecto
   }
   metrics.ate_m = ComputeErrorStatistics(std::move(ate_errors));
   metrics.rpe = ComputeRelativePoseError(association, options);
+  metrics.steps = ComputeFrameSteps(association, options.max_gap_s);
 
   const auto by_stamp = [](const StampedPose& a, const StampedPose& b) {
     return a.stamp_s < b.stamp_s;

@@ -112,6 +112,10 @@ void PrintTable(const dslam::TrajectoryMetrics& m, const std::string& correction
   row("RPE trans RMSE", "[m/s]", has_rpe ? Fixed(m.rpe.translation_rmse_m_per_s, 6) : "n/a");
   row("RPE rot RMSE", "[deg/s]", has_rpe ? Fixed(m.rpe.rotation_rmse_deg_per_s, 6) : "n/a");
   row("RPE pairs", "", std::to_string(m.rpe.num_pairs));
+  const dslam::FrameSteps& steps = m.steps;
+  row("step median / max", "[m]",
+      Fixed(steps.step_m.median, 4) + " / " + Fixed(steps.step_m.max, 4) + " (truth " +
+          Fixed(steps.truth_step_m.median, 4) + " / " + Fixed(steps.truth_step_m.max, 4) + ")");
   row("associated / estimated", "",
       std::to_string(m.num_associated) + " / " + std::to_string(m.num_estimated));
   const dslam::Coverage& c = m.coverage;
@@ -143,6 +147,10 @@ dslam::JsonObject MetricsJson(const dslam::TrajectoryMetrics& m, const Arguments
       .AddNumber("rpe_trans_rmse_m_per_s", has_rpe ? m.rpe.translation_rmse_m_per_s : nan, kDigits)
       .AddNumber("rpe_rot_rmse_deg_per_s", has_rpe ? m.rpe.rotation_rmse_deg_per_s : nan, kDigits)
       .AddInteger("rpe_pairs", static_cast<long long>(m.rpe.num_pairs))
+      .AddNumber("step_median_m", m.steps.step_m.median, kDigits)
+      .AddNumber("step_max_m", m.steps.step_m.max, kDigits)
+      .AddNumber("truth_step_median_m", m.steps.truth_step_m.median, kDigits)
+      .AddNumber("truth_step_max_m", m.steps.truth_step_m.max, kDigits)
       .AddInteger("associated_poses", static_cast<long long>(m.num_associated))
       .AddInteger("estimated_poses", static_cast<long long>(m.num_estimated))
       .AddInteger("groundtruth_poses", static_cast<long long>(m.num_groundtruth))

@@ -3,8 +3,17 @@
 #include <algorithm>
 
 #include "dslam/tracking/id_set.h"
+#include "dslam/tracking/keyframe_window.h"
 
 namespace dslam {
+namespace {
+
+// An archived keyframe is redundant when this share of its points is observed by at least
+// kRedundantObservers other map keyframes (ORB-SLAM2's keyframe culling uses 90 % and 3).
+constexpr double kRedundantShare = 0.9;
+constexpr int kRedundantObservers = 3;
+
+}  // namespace
 
 PointId Map::AddPoint(MapPoint point) {
   point.id = next_point_id_++;
@@ -25,11 +34,71 @@ const MapPoint* Map::Find(PointId id) const {
 
 void Map::Erase(PointId id) { points_.erase(id); }
 
-const KeyFrame& Map::AddKeyFrame(KeyFrame keyframe, int max_keyframes) {
+const KeyFrame& Map::AddKeyFrame(KeyFrame keyframe, const KeyFrameMapLimits& limits) {
   keyframe.id = next_keyframe_id_++;
+  CountObservations(keyframe, +1);
   keyframes_.push_back(std::move(keyframe));
-  while (static_cast<int>(keyframes_.size()) > max_keyframes) keyframes_.pop_front();
+  SetWindow(SelectKeyFrameWindow(*this, limits), limits.recent_keyframes);
+  const int max_keyframes =
+      std::max(limits.max_keyframes, limits.recent_keyframes + limits.covisible_keyframes);
+  while (!archive_.empty() && static_cast<int>(num_keyframes()) > max_keyframes) {
+    CountObservations(archive_.begin()->second, -1);
+    archive_.erase(archive_.begin());
+  }
   return keyframes_.back();
+}
+
+void Map::CountObservations(const KeyFrame& keyframe, int delta) {
+  for (PointId id : keyframe.points) {
+    MapPoint* point = Find(id);
+    if (point != nullptr) point->observing_keyframes += delta;
+  }
+}
+
+void Map::SetWindow(const std::vector<int>& window_ids, int recent_keyframes) {
+  IdSet in_window(window_ids.size());
+  for (int id : window_ids) in_window.Insert(id);
+  std::vector<int> archived;
+  std::deque<KeyFrame> window;
+  for (KeyFrame& keyframe : keyframes_) {
+    if (in_window.Contains(keyframe.id)) {
+      window.push_back(std::move(keyframe));
+    } else {
+      archived.push_back(keyframe.id);
+      archive_.emplace(keyframe.id, std::move(keyframe));
+    }
+  }
+  for (int id : window_ids) {
+    const auto it = archive_.find(id);
+    if (it == archive_.end()) continue;
+    window.push_back(std::move(it->second));
+    archive_.erase(it);
+  }
+  std::sort(window.begin(), window.end(),
+            [](const KeyFrame& a, const KeyFrame& b) { return a.id < b.id; });
+  keyframes_ = std::move(window);
+  recent_in_window_ = std::min(keyframes_.size(), static_cast<size_t>(recent_keyframes));
+  EraseRedundant(archived);
+}
+
+bool Map::IsRedundant(const KeyFrame& keyframe) const {
+  int points = 0, observed = 0;
+  for (PointId id : keyframe.points) {
+    const MapPoint* point = Find(id);
+    if (point == nullptr) continue;
+    ++points;
+    if (point->observing_keyframes > kRedundantObservers) ++observed;
+  }
+  return observed >= kRedundantShare * points;
+}
+
+void Map::EraseRedundant(const std::vector<int>& ids) {
+  for (int id : ids) {
+    const auto it = archive_.find(id);
+    if (it == archive_.end() || !IsRedundant(it->second)) continue;
+    CountObservations(it->second, -1);
+    archive_.erase(it);
+  }
 }
 
 std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
@@ -57,19 +126,13 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
 
 int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
               int static_seen_since_frame) {
-  size_t window_points = 0;
-  for (const KeyFrame& kf : keyframes_) window_points += kf.points.size();
-  IdSet in_window(window_points);
-  for (const KeyFrame& kf : keyframes_) {
-    for (PointId id : kf.points) in_window.Insert(id);
-  }
   int removed = 0;
   for (auto it = points_.begin(); it != points_.end();) {
     const MapPoint& p = it->second;
     const int keep_since = static_seen_since_frame >= 0 && p.IsVerifiedStatic()
                                ? std::min(oldest_frame_to_keep, static_seen_since_frame)
                                : oldest_frame_to_keep;
-    const bool stale = p.last_seen_frame < keep_since && !in_window.Contains(p.id);
+    const bool stale = p.last_seen_frame < keep_since && p.observing_keyframes <= 0;
     const bool unreliable =
         p.times_visible >= min_visible && p.times_found < min_found_ratio * p.times_visible;
     if (stale || unreliable) {
@@ -85,6 +148,7 @@ int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
 Map Map::WindowCopy() const {
   Map copy;
   copy.keyframes_ = keyframes_;
+  copy.recent_in_window_ = recent_in_window_;
   copy.next_point_id_ = next_point_id_;
   copy.next_keyframe_id_ = next_keyframe_id_;
   const auto add = [&](PointId id) {
@@ -102,12 +166,15 @@ KeyFrame* Map::FindKeyFrame(int id) {
   for (KeyFrame& keyframe : keyframes_) {
     if (keyframe.id == id) return &keyframe;
   }
-  return nullptr;
+  const auto it = archive_.find(id);
+  return it == archive_.end() ? nullptr : &it->second;
 }
 
 void Map::Clear() {
   points_.clear();
   keyframes_.clear();
+  archive_.clear();
+  recent_in_window_ = 0;
 }
 
 }  // namespace dslam

@@ -216,7 +216,7 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   keyframe.points = ids;
   previous_ = FrameMeasurements();
   keyframe.measurements = MeasurementsOf(*current, ids);
-  map_.AddKeyFrame(std::move(keyframe), config_.tracking.window_keyframes);
+  map_.AddKeyFrame(std::move(keyframe), MapLimits());
   last_keyframe_frame_ = result.frame_index;
   last_keyframe_static_ = static_cast<int>(ids.size());
   last_tracked_ = ids;

@@ -110,14 +110,16 @@ std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const 
   std::vector<const FrameMeasurements*> frames;
   if (cfg.front_end_reference != "previous") {
     // Keyframes at least front_end_min_age_frames old (a short baseline hides walking people),
-    // spread evenly from the oldest (longest baseline) to the newest eligible one.
+    // spread evenly from the oldest of the newest keyframes (longest baseline) to the newest
+    // eligible one.
     const auto& keyframes = map_.keyframes();
+    const int first = static_cast<int>(map_.first_recent_keyframe());
     const int now = frame_index_ - 1;
-    int n = static_cast<int>(keyframes.size());
-    while (n > 1 && now - keyframes[n - 1].frame_index < cfg.front_end_min_age_frames) --n;
+    int n = static_cast<int>(keyframes.size()) - first;
+    while (n > 1 && now - keyframes[first + n - 1].frame_index < cfg.front_end_min_age_frames) --n;
     const int k = std::min(n, cfg.front_end_keyframes);
     for (int i = 0; i < k; ++i) {
-      const int index = k == 1 ? 0 : i * (n - 1) / (k - 1);
+      const int index = first + (k == 1 ? 0 : i * (n - 1) / (k - 1));
       frames.push_back(&keyframes[index].measurements);
     }
   }
@@ -199,6 +201,11 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
   }
 }
 
+KeyFrameMapLimits Odometry::MapLimits() const {
+  const TrackingConfig& cfg = config_.tracking;
+  return {cfg.window_keyframes, cfg.covisible_keyframes, cfg.max_keyframes};
+}
+
 int Odometry::StaticSeenSinceFrame() const {
   const int keep = config_.tracking.keep_static_frames;
   return keep > 0 ? std::max(0, frame_index_ - 1 - keep) : -1;
@@ -254,9 +261,9 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
   keyframe.measurements = MeasurementsOf(current, created);
   keyframe.information = current.pose.information;
-  map_.AddKeyFrame(std::move(keyframe), cfg.window_keyframes);
-  map_.Cull(map_.keyframes().front().frame_index, cfg.cull_min_found_ratio, kCullMinVisible,
-            StaticSeenSinceFrame());
+  map_.AddKeyFrame(std::move(keyframe), MapLimits());
+  map_.Cull(map_.keyframes()[map_.first_recent_keyframe()].frame_index, cfg.cull_min_found_ratio,
+            kCullMinVisible, StaticSeenSinceFrame());
   last_keyframe_frame_ = frame_index;
   last_keyframe_static_ = current.pose.num_inliers;
   last_tracked_.insert(last_tracked_.end(), created.begin(), created.end());

@@ -63,7 +63,7 @@ Scene MakeScene(int keyframes, int points, unsigned seed) {
       keyframe.measurements.by_point.emplace(i, m);
       keyframe.points.push_back(i);
     }
-    scene.map.AddKeyFrame(std::move(keyframe), 100);
+    scene.map.AddKeyFrame(std::move(keyframe), KeyFrameMapLimits::Newest(100));
   }
   return scene;
 }
@@ -104,6 +104,8 @@ TEST(LocalBundleAdjustment, RecoversPerturbedPosesAndPoints) {
   EXPECT_EQ(stats.points, 80);
   EXPECT_EQ(stats.measurements, 400);
   EXPECT_LE(stats.outliers, 20);  // chi-square 95%: about 5% of the measurements
+  // The noise is drawn from the measurements' covariances: the model fits.
+  EXPECT_NEAR(stats.chi2_per_dof, 1.0, 0.15);
   // Perturbed by 10 mrad and 20 mm per axis; what remains is the estimation error of this
   // geometry (rotation and translation across the view are hard to tell apart at 2-4 m).
   std::vector<Eigen::Isometry3d> T_estimated;

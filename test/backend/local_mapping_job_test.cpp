@@ -49,7 +49,7 @@ Map MakeMap(unsigned seed) {
       keyframe.measurements.by_point.emplace(i, m);
       keyframe.points.push_back(i);
     }
-    map.AddKeyFrame(std::move(keyframe), 100);
+    map.AddKeyFrame(std::move(keyframe), KeyFrameMapLimits::Newest(100));
   }
   return map;
 }
@@ -97,7 +97,7 @@ TEST(LocalMappingJob, ApplySkipsWhatLeftTheMapMeanwhile) {
   live.Erase(5);
   KeyFrame newest;
   newest.T_world_camera.translation() = Eigen::Vector3d(9.0, 9.0, 9.0);
-  const int newest_id = live.AddKeyFrame(newest, kKeyFrames).id;
+  const int newest_id = live.AddKeyFrame(newest, KeyFrameMapLimits::Newest(kKeyFrames)).id;
   job.Run(config);
   job.Apply(&live);
   EXPECT_EQ(live.Find(5), nullptr);  // not brought back
@@ -157,7 +157,7 @@ TEST(LocalMappingJob, WhatWasMadeDuringTheRunFollowsItsNewestKeyFrame) {
   point.p_world = made.T_world_camera * Eigen::Vector3d(0.1, -0.2, 2.0);
   const PointId point_id = live.AddPoint(point);
   made.points.push_back(point_id);
-  const int made_id = live.AddKeyFrame(made, 100).id;
+  const int made_id = live.AddKeyFrame(made, KeyFrameMapLimits::Newest(100)).id;
   job.Run(config);
   job.Apply(&live);
   const Eigen::Isometry3d correction =

@@ -58,7 +58,7 @@ Scene MakeScene(int keyframes, double box_step_m, unsigned seed) {
       keyframe.measurements.by_point.emplace(id, m);
       keyframe.points.push_back(id);
     }
-    scene.map.AddKeyFrame(keyframe, 100);
+    scene.map.AddKeyFrame(keyframe, KeyFrameMapLimits::Newest(100));
   }
   return scene;
 }

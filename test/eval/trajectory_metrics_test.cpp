@@ -194,6 +194,25 @@ std::vector<double> EveryFiftyMs(double from, double to) {
   return stamps;
 }
 
+TEST(TrajectoryMetrics, FrameStepsSeeJitterThatAteHides) {
+  // Truth moves 2 mm per frame along x; the estimate adds +-5 mm along y on alternate frames
+  // and has one 0.5 s gap, whose step is skipped.
+  PoseAssociation pairs;
+  double stamp = 0.0;
+  for (int k = 0; k < 10; ++k) {
+    stamp += k == 5 ? 0.5 : 1.0 / 30.0;
+    const Eigen::Vector3d truth(0.002 * k, 0.0, 0.0);
+    const Eigen::Vector3d jitter(0.0, k % 2 == 0 ? 0.005 : -0.005, 0.0);
+    pairs.groundtruth.push_back(MakePose(stamp, Eigen::Matrix3d::Identity(), truth));
+    pairs.estimated.push_back(MakePose(stamp, Eigen::Matrix3d::Identity(), truth + jitter));
+  }
+  const FrameSteps steps = ComputeFrameSteps(pairs, 0.1);
+  EXPECT_EQ(steps.num_steps, 8u);
+  EXPECT_NEAR(steps.truth_step_m.median, 0.002, 1e-12);
+  EXPECT_NEAR(steps.truth_step_m.max, 0.002, 1e-12);
+  EXPECT_NEAR(steps.step_m.median, std::hypot(0.002, 0.010), 1e-12);
+}
+
 TEST(TrajectoryMetrics, GapsReduceCoverageByTheirLength) {
   EXPECT_NEAR(ComputeCoverage(EveryFiftyMs(0.0, 10.0), 0.0, 10.0, 0.1).fraction, 1.0, 1e-12);
   // Gap 2.98 -> 3.53 (0.55 s) is uncovered.

@@ -26,7 +26,7 @@ TEST(Map, KeyFrameWindowAndLocalPoints) {
   for (int k = 0; k < 3; ++k) {
     KeyFrame kf;
     kf.points = {ids[2 * k], ids[2 * k + 1]};
-    map.AddKeyFrame(kf, 2);
+    map.AddKeyFrame(kf, KeyFrameMapLimits::Newest(2));
   }
   ASSERT_EQ(map.keyframes().size(), 2u);
   EXPECT_EQ(map.keyframes().front().id, 1);
@@ -53,7 +53,7 @@ TEST(Map, CullRemovesStaleAndUnreliablePoints) {
   const PointId u = map.AddPoint(unreliable), w = map.AddPoint(in_window);
   KeyFrame kf;
   kf.points = {w};
-  map.AddKeyFrame(kf, 5);
+  map.AddKeyFrame(kf, KeyFrameMapLimits::Newest(5));
   EXPECT_EQ(map.Cull(10, 0.25, 5), 2);
   EXPECT_EQ(map.Find(s), nullptr);
   EXPECT_EQ(map.Find(u), nullptr);

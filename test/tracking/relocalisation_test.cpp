@@ -40,8 +40,8 @@ TEST(WindowMarkedPoints, MarkedPointsOfTheWindowOnceInOrder) {
   KeyFrame first, second;
   first.points = {c, b};
   second.points = {a, c};
-  map.AddKeyFrame(first, 5);
-  map.AddKeyFrame(second, 5);
+  map.AddKeyFrame(first, KeyFrameMapLimits::Newest(5));
+  map.AddKeyFrame(second, KeyFrameMapLimits::Newest(5));
   EXPECT_EQ(WindowMarkedPoints(map), (std::vector<PointId>{c, a}));
   EXPECT_NE(outside, a);
 }

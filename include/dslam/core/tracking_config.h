@@ -12,6 +12,8 @@ namespace dslam {
 /// and meanings of the fields are given in Fields() (printed by `dslam_config_doc`).
 struct TrackingConfig {
   int window_keyframes = 12;
+  int covisible_keyframes = 0;
+  int max_keyframes = 300;
   double search_radius_px = 10.0;
   bool follow_last_measurement = true;
   double wide_search_radius_px = 30.0;
@@ -49,8 +51,18 @@ struct TrackingConfig {
   // Local-map search and pose trust.
   template <typename Self, typename Visitor>
   static void SearchFields(Self& s, Visitor& v) {
-    v(Field("window_keyframes", "-", 1, 100, "keyframes whose points form the local map"),
+    v(Field("window_keyframes", "-", 1, 100,
+            "newest keyframes in the window (whose points form the local map)"),
       s.window_keyframes);
+    // Chosen by covisibility with the newest keyframe or by a nearby camera (keyframe_window.h):
+    // a camera that returns to a view searches the points it made there, and the back end's
+    // window ties the new keyframes to them. 0: the window is the newest keyframes alone.
+    v(Field("covisible_keyframes", "-", 0, 100, "older map keyframes added to the window"),
+      s.covisible_keyframes);
+    // Beyond it the oldest keyframes outside the window are erased (and their points with them,
+    // when no other keyframe observes them); redundant ones go first (Map::AddKeyFrame).
+    v(Field("max_keyframes", "-", 1, 100000, "keyframes the map keeps (at least the window's)"),
+      s.max_keyframes);
     v(Field("search_radius_px", "px", 1.0, 200.0, "projection search radius (octave 0)"),
       s.search_radius_px);
     // A marked point's map position is where it was created (fuse_static_points off); projected

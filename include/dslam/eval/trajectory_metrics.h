@@ -70,6 +70,18 @@ struct RelativePoseError {
 RelativePoseError ComputeRelativePoseError(const PoseAssociation& association,
                                            const TrajectoryMetricsOptions& options);
 
+/// How far the camera centre moves between consecutive associated poses (pairs at most
+/// max_gap_s apart), in the estimate and in the ground truth: frame-to-frame jitter and jumps that
+/// ATE, after its alignment, hides.
+struct FrameSteps {
+  size_t num_steps = 0;          ///< consecutive pairs used
+  ErrorStatistics step_m;        ///< [m] |c_est(k+1) - c_est(k)|
+  ErrorStatistics truth_step_m;  ///< [m] |c_gt(k+1) - c_gt(k)|
+};
+
+/// FrameSteps of an association; pairs further apart in time than `max_gap_s` [s] are skipped.
+FrameSteps ComputeFrameSteps(const PoseAssociation& association, double max_gap_s);
+
 /// Time coverage of a sequence by estimated poses.
 struct Coverage {
   double span_start_s = 0.0;  ///< [s] start of the evaluated span
@@ -97,6 +109,7 @@ struct TrajectoryMetrics {
   Eigen::Isometry3d T_gtworld_estworld = Eigen::Isometry3d::Identity();  ///< ATE alignment
   ErrorStatistics ate_m;  ///< [m] |p_gt - T_gtworld_estworld * p_est| over associated pairs
   RelativePoseError rpe;  ///< see RelativePoseError
+  FrameSteps steps;       ///< see FrameSteps (pairs at most max_gap_s apart)
   Coverage coverage;      ///< see ComputeCoverage()
 };
 

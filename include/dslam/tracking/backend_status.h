@@ -25,6 +25,10 @@ struct LocalBaStats {
   int measurements = 0;  ///< [-] RGB-D measurements (residuals) in the first round
   int outliers = 0;      ///< [-] measurements left out by the final chi-square test
   int iterations = 0;    ///< [-] solver iterations, both rounds
+  /// [-] sum of all measurements' squared whitened residuals at the solution over the degrees of
+  /// freedom (3 x measurements - 3 x points - 6 x free keyframes): about 1 when the noise model
+  /// fits the measurements and nothing moved
+  double chi2_per_dof = 0.0;
   double time_ms = 0.0;  ///< [ms] wall time
   /// [m], [deg] largest move of a keyframe's camera centre and rotation from the front end's pose
   double largest_correction_m = 0.0, largest_correction_deg = 0.0;
@@ -70,11 +74,14 @@ struct BackEndStatus {
     v(StatusField("ba_keyframes", "-", kBa, 0, 1, "keyframes whose poses it optimised"),
       s.ba.keyframes);
     v(StatusField("ba_points", "-", kBa, kBoth, 2, "map points optimised"), s.ba.points);
-    v(StatusField("ba_measurements", "-", kBa, 0, -1, "RGB-D measurements (residuals) it used"),
+    v(StatusField("ba_measurements", "-", kBa, kCsv, -1, "RGB-D measurements (residuals) it used"),
       s.ba.measurements);
     v(StatusField("ba_outliers", "-", kBa, kBoth, 3, "measurements the chi-square test left out"),
       s.ba.outliers);
     v(StatusField("ba_iterations", "-", kBa, kBoth, 4, "solver iterations"), s.ba.iterations);
+    v(StatusField("ba_chi2_per_dof", "-", kBa, kCsv, 13,
+                  "squared whitened residuals over the degrees of freedom (1: the noise fits)"),
+      s.ba.chi2_per_dof);
     v(StatusField("ba_ms", "ms", kBa, kBoth, 0, "its wall-clock time"), s.ba.time_ms);
     v(StatusField("spd_ran", "-", kSpd, kMsg, -1, "ran after this frame"), s.spd.ran);
     v(StatusField("spd_keyframes", "-", kSpd, 0, -1,

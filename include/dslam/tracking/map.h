@@ -1,13 +1,17 @@
 #pragma once
-// The odometry's local map: map points (marked = trusted static, unmarked = seen moving) and the
-// keyframes that created them. Not thread-safe: Slam (backend/slam.h) owns the live map and
-// guards it with its map mutex; the tracking thread changes it in Odometry::ProcessFrame, and the
-// back end copies the window into a LocalMappingJob and applies the job's results under that
-// mutex (slam.h states the locking policy).
+// The odometry's keyframe map: map points (marked = trusted static, unmarked = seen moving) and the
+// keyframes that observed them. The map keeps keyframes beyond the window (up to a cap, culling
+// redundant ones); the window, the keyframes whose points tracking searches and the back end
+// refines, is the newest keyframes plus older ones chosen by covisibility (keyframe_window.h), so
+// that a camera returning to a view finds the points it made there. Not thread-safe: Slam
+// (backend/slam.h) owns the live map and guards it with its map mutex; the tracking thread changes
+// it in Odometry::ProcessFrame, and the back end copies the window into a LocalMappingJob and
+// applies the job's results under that mutex (slam.h states the locking policy).
 
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -41,6 +45,7 @@ struct MapPoint {
   int isolated_frames = 0;  ///< consecutive frames in which all its graph edges were inconsistent
   int static_streak = 0;    ///< unmarked point: consecutive frames the front end found it static
   int dynamic_frames = 0;   ///< frames labelled dynamic since it was last marked
+  int observing_keyframes = 0;  ///< map keyframes (window and archive) listing it in `points`
 
   /// Marked and verified: drives motion estimation.
   bool IsVerifiedStatic() const { return marked && !candidate; }
@@ -89,7 +94,18 @@ struct KeyFrame {
   Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
-/// Map points and a window of recent keyframes.
+/// How many keyframes the window and the map hold (TrackingConfig: window_keyframes,
+/// covisible_keyframes, max_keyframes).
+struct KeyFrameMapLimits {
+  int recent_keyframes = 12;    ///< the newest keyframes, always in the window
+  int covisible_keyframes = 0;  ///< older keyframes added to the window (keyframe_window.h)
+  int max_keyframes = 12;       ///< keyframes the map keeps, window included (the cap)
+
+  /// A window of the newest `n` keyframes alone; older ones are erased.
+  static KeyFrameMapLimits Newest(int n) { return {n, 0, n}; }
+};
+
+/// Map points, the keyframe window and the archived keyframes (the rest of the keyframe map).
 class Map {
  public:
   /// Adds a point, assigns and returns its id.
@@ -102,11 +118,21 @@ class Map {
   /// Removes a point (no-op when absent).
   void Erase(PointId id);
 
-  /// Appends a keyframe (its id is assigned) and drops the oldest beyond `max_keyframes`.
-  const KeyFrame& AddKeyFrame(KeyFrame keyframe, int max_keyframes);
+  /// Appends a keyframe (its id is assigned), chooses the window for it (SelectKeyFrameWindow),
+  /// archives the keyframes that left the window, erases archived keyframes that are redundant
+  /// (map.cpp: kRedundantShare of their points observed by kRedundantObservers other keyframes)
+  /// and then the oldest archived ones beyond `limits.max_keyframes` (at least the window's size).
+  const KeyFrame& AddKeyFrame(KeyFrame keyframe, const KeyFrameMapLimits& limits);
 
-  /// Recent keyframes, oldest first.
+  /// The window's keyframes, oldest first (ids ascending); the newest keyframe is last.
   const std::deque<KeyFrame>& keyframes() const { return keyframes_; }
+  /// Index in keyframes() of the oldest of the newest `recent_keyframes` (0 without older
+  /// covisible keyframes in the window).
+  size_t first_recent_keyframe() const { return keyframes_.size() - recent_in_window_; }
+  /// Keyframes of the map outside the window, by id.
+  const std::map<int, KeyFrame>& archived_keyframes() const { return archive_; }
+  /// Keyframes in the map: window and archive.
+  size_t num_keyframes() const { return keyframes_.size() + archive_.size(); }
   /// The same, for the back end to refine poses and drop measurements (ids and order stay).
   std::deque<KeyFrame>& mutable_keyframes() { return keyframes_; }
 
@@ -116,7 +142,7 @@ class Map {
   std::vector<PointId> LocalPoints(const std::vector<PointId>& extra,
                                    int static_seen_since_frame = -1) const;
 
-  /// Removes points that are neither referenced by a window keyframe nor seen since
+  /// Removes points that are neither referenced by a map keyframe nor seen since
   /// `oldest_frame_to_keep` (verified static points: since `static_seen_since_frame`, when it is
   /// earlier), and points whose found/visible ratio fell below `min_found_ratio` after
   /// `min_visible` sightings. Returns the number removed.
@@ -128,7 +154,7 @@ class Map {
   /// goes on with this map.
   Map WindowCopy() const;
 
-  /// The window keyframe with `id`, or nullptr when it left the window.
+  /// The keyframe with `id` (window or archive), or nullptr when it was erased.
   KeyFrame* FindKeyFrame(int id);
 
   /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
@@ -137,8 +163,19 @@ class Map {
   void Clear();                                   ///< removes every point and keyframe
 
  private:
+  /// Adds `delta` to observing_keyframes of the points `keyframe` lists.
+  void CountObservations(const KeyFrame& keyframe, int delta);
+  /// Makes the keyframes with `window_ids` the window; the others go to the archive.
+  void SetWindow(const std::vector<int>& window_ids, int recent_keyframes);
+  /// Whether most points of `keyframe` are observed by enough other keyframes.
+  bool IsRedundant(const KeyFrame& keyframe) const;
+  /// Erases archived keyframes with ids in `ids` that are redundant.
+  void EraseRedundant(const std::vector<int>& ids);
+
   std::unordered_map<PointId, MapPoint> points_;
   std::deque<KeyFrame> keyframes_;
+  std::map<int, KeyFrame> archive_;
+  size_t recent_in_window_ = 0;
   PointId next_point_id_ = 0;
   int next_keyframe_id_ = 0;
 };

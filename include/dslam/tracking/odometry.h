@@ -134,6 +134,8 @@ class Odometry {
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(int static_matches) const;
+  /// The keyframe map's limits from tracking.window_keyframes, covisible_keyframes, max_keyframes.
+  KeyFrameMapLimits MapLimits() const;
   /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
   int StaticSeenSinceFrame() const;
   int MakeKeyFrame(const Current& current);

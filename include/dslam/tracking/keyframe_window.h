@@ -1,0 +1,28 @@
+#pragma once
+// Which keyframes of the keyframe map form the window: the keyframes whose points tracking
+// searches (Map::LocalPoints) and the back end refines (LocalMappingJob). The newest keyframes
+// always belong to it; older keyframes join it when they share points with the newest keyframe
+// (covisibility) or when the newest keyframe's camera is near theirs (a view the camera returns
+// to, whose points tracking has not matched yet, so that covisibility cannot find them).
+
+#include <vector>
+
+#include "dslam/tracking/map.h"
+
+namespace dslam {
+
+/// [points] Older keyframes sharing fewer points with the newest keyframe are not covisible.
+constexpr int kMinCovisiblePoints = 15;
+/// [m] and [deg] An older keyframe is near the newest one when their camera centres are at most
+/// this far apart and their optical axes at most this angle.
+constexpr double kNearbyKeyFrameM = 0.3;
+constexpr double kNearbyKeyFrameDeg = 20.0;
+
+/// Ids of the window for the map's newest keyframe (the last of map.keyframes()), ascending:
+/// the newest `limits.recent_keyframes` keyframes of the map, then up to
+/// `limits.covisible_keyframes` older ones, half of the places first to the nearby keyframes
+/// that share no points with it (nearest first), the rest by the number of points shared with
+/// the newest keyframe (most first); places left go to the other list.
+std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& limits);
+
+}  // namespace dslam

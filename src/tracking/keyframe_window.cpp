@@ -1,0 +1,81 @@
+#include "dslam/tracking/keyframe_window.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "dslam/tracking/id_set.h"
+
+namespace dslam {
+namespace {
+
+/// Every keyframe of the map, newest first.
+std::vector<const KeyFrame*> NewestFirst(const Map& map) {
+  std::vector<const KeyFrame*> all;
+  all.reserve(map.num_keyframes());
+  for (const KeyFrame& keyframe : map.keyframes()) all.push_back(&keyframe);
+  for (const auto& entry : map.archived_keyframes()) all.push_back(&entry.second);
+  std::sort(all.begin(), all.end(),
+            [](const KeyFrame* a, const KeyFrame* b) { return a->id > b->id; });
+  return all;
+}
+
+int SharedPoints(const KeyFrame& keyframe, const IdSet& points) {
+  int shared = 0;
+  for (PointId id : keyframe.points) shared += points.Contains(id) ? 1 : 0;
+  return shared;
+}
+
+/// [m] Camera-centre distance when the optical axes are within kNearbyKeyFrameDeg, else < 0.
+double NearbyDistance(const KeyFrame& a, const KeyFrame& b) {
+  const double cos_angle = a.T_world_camera.linear().col(2).dot(b.T_world_camera.linear().col(2));
+  if (cos_angle < std::cos(kNearbyKeyFrameDeg * M_PI / 180.0)) return -1.0;
+  const double distance = (a.T_world_camera.translation() - b.T_world_camera.translation()).norm();
+  return distance <= kNearbyKeyFrameM ? distance : -1.0;
+}
+
+/// (score, id) pairs sorted best first: higher score first, then newer.
+using Ranked = std::vector<std::pair<double, int>>;
+void SortBestFirst(Ranked* ranked) {
+  std::sort(ranked->begin(), ranked->end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second > b.second;
+  });
+}
+
+}  // namespace
+
+std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& limits) {
+  const std::vector<const KeyFrame*> all = NewestFirst(map);
+  const size_t recent = std::min(all.size(), static_cast<size_t>(limits.recent_keyframes));
+  std::vector<int> window;
+  for (size_t i = 0; i < recent; ++i) window.push_back(all[i]->id);
+  if (all.empty() || limits.covisible_keyframes <= 0) {
+    std::sort(window.begin(), window.end());
+    return window;
+  }
+  const KeyFrame& newest = *all.front();
+  IdSet newest_points(newest.points.size());
+  for (PointId id : newest.points) newest_points.Insert(id);
+  Ranked covisible, nearby;
+  for (size_t i = recent; i < all.size(); ++i) {
+    const int shared = SharedPoints(*all[i], newest_points);
+    if (shared >= kMinCovisiblePoints) {
+      covisible.emplace_back(shared, all[i]->id);
+      continue;
+    }
+    const double distance = NearbyDistance(newest, *all[i]);
+    if (distance >= 0.0) nearby.emplace_back(-distance, all[i]->id);
+  }
+  SortBestFirst(&covisible);
+  SortBestFirst(&nearby);
+  const size_t places = static_cast<size_t>(limits.covisible_keyframes);
+  const size_t from_nearby =
+      std::min(nearby.size(), std::max(places / 2, places - std::min(places, covisible.size())));
+  const size_t from_covisible = std::min(covisible.size(), places - from_nearby);
+  for (size_t i = 0; i < from_nearby; ++i) window.push_back(nearby[i].second);
+  for (size_t i = 0; i < from_covisible; ++i) window.push_back(covisible[i].second);
+  std::sort(window.begin(), window.end());
+  return window;
+}
+
+}  // namespace dslam
