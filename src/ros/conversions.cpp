@@ -115,8 +115,17 @@ Eigen::Isometry3d OdomFromBase(const Eigen::Isometry3d& T_world_camera,
   return T_base_camera * T_world_camera * T_base_camera.inverse();
 }
 
+Eigen::Isometry3d MapFromOdom(const Eigen::Isometry3d& T_map_odom_optical,
+                              const Eigen::Isometry3d& T_base_camera) {
+  // A mount from TF gives T_base_camera * T_base_camera^-1 with round-off.
+  if (T_map_odom_optical.matrix() == Eigen::Matrix4d::Identity()) {
+    return Eigen::Isometry3d::Identity();
+  }
+  return T_base_camera * T_map_odom_optical * T_base_camera.inverse();
+}
+
 Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& information,
-                                           const Eigen::Isometry3d& T_world_camera,
+                                           const Eigen::Isometry3d& T_odom_camera,
                                            const Eigen::Isometry3d& T_base_camera,
                                            double unknown_variance) {
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
@@ -125,16 +134,16 @@ Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& in
       ldlt.vectorD().minCoeff() <= 1e-12 * std::max(1.0, ldlt.vectorD().maxCoeff())) {
     return unknown_variance * Matrix6d::Identity();
   }
-  // Covariance of [dp; dtheta] of T_world_camera (left perturbation in the world frame).
-  const Matrix6d cov_world_camera = CovarianceWorldCamera(information, T_world_camera.inverse());
-  // T_odom_base = T_bc T_wc T_cb: dp_ob = R_bc (dp - [R_wc t_cb]x dtheta), dtheta_o = R_bc dtheta.
+  // Covariance of [dp; dtheta] of T_odom_camera (left perturbation in the odom optical frame).
+  const Matrix6d cov_odom_camera = CovarianceWorldCamera(information, T_odom_camera.inverse());
+  // T_odom_base = T_bc T_oc T_cb: dp_ob = R_bc (dp - [R_oc t_cb]x dtheta), dtheta_o = R_bc dtheta.
   const Eigen::Matrix3d R_bc = T_base_camera.rotation();
-  const Eigen::Vector3d lever = T_world_camera.rotation() * T_base_camera.inverse().translation();
+  const Eigen::Vector3d lever = T_odom_camera.rotation() * T_base_camera.inverse().translation();
   Matrix6d J = Matrix6d::Zero();
   J.block<3, 3>(0, 0) = R_bc;
   J.block<3, 3>(0, 3) = -R_bc * Skew(lever);
   J.block<3, 3>(3, 3) = R_bc;
-  return J * cov_world_camera * J.transpose();
+  return J * cov_odom_camera * J.transpose();
 }
 
 }  // namespace ros_layer

@@ -1,5 +1,7 @@
 #include "dslam/ros/frame_publisher.h"
 
+#include <vector>
+
 #include <cv_bridge/cv_bridge.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -42,38 +44,61 @@ FramePublisher::FramePublisher(ros::NodeHandle& nh, const NodeConfig& config) : 
 void FramePublisher::Publish(const FrameResult& result, const RgbdFrame& frame,
                              const std_msgs::Header& header, const Eigen::Isometry3d& T_base_camera,
                              const FrameCounters& counters, double latency_ms) {
+  odom_.Add(result);
   std_msgs::Header odom_header = header;
   odom_header.frame_id = config_.odom_frame;
-  if (result.has_pose) PublishPose(result, odom_header, T_base_camera);
-  PublishVisuals(result, frame, header, odom_header, T_base_camera);
+  const WorldDataFrame world = WorldData(T_base_camera);
+  std_msgs::Header world_header = header;
+  world_header.frame_id = world.frame_id;
+  if (result.has_pose) {
+    PublishOdom(result, odom_header, T_base_camera);
+    // The base's pose in the world data's frame: T_frame_world * T_world_camera * T_camera_base.
+    geometry_msgs::PoseStamped stamped;
+    stamped.header = world_header;
+    stamped.pose =
+        tf2::toMsg(world.T_frame_world * result.T_world_camera * T_base_camera.inverse());
+    UpdatePath(stamped);
+  }
+  PublishVisuals(result, frame, header, world_header, world.T_frame_world);
   PublishStatus(result, ToString(result.state), odom_header, counters, latency_ms);
 }
 
-void FramePublisher::PublishPose(const FrameResult& result, const std_msgs::Header& odom_header,
+WorldDataFrame FramePublisher::WorldData(const Eigen::Isometry3d& T_base_camera) const {
+  WorldDataFrame world;
+  world.frame_id = WorldDataFrameId(config_);
+  // The map frame is the base frame at the tracker's first frame (its world's origin).
+  world.T_frame_world =
+      config_.publish_map_tf ? T_base_camera : T_base_camera * odom_.T_map_odom().inverse();
+  return world;
+}
+
+void FramePublisher::PublishOdom(const FrameResult& result, const std_msgs::Header& odom_header,
                                  const Eigen::Isometry3d& T_base_camera) {
-  const Eigen::Isometry3d T_odom_base = OdomFromBase(result.T_world_camera, T_base_camera);
-  const geometry_msgs::Pose pose = tf2::toMsg(T_odom_base);
-  if (config_.publish_tf) {
-    geometry_msgs::TransformStamped tf = tf2::eigenToTransform(T_odom_base);
-    tf.header = odom_header;
-    tf.child_frame_id = config_.base_frame;
-    tf_broadcaster_.sendTransform(tf);
+  const Eigen::Isometry3d T_odom_base = OdomFromBase(odom_.T_odom_camera(), T_base_camera);
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  if (config_.publish_map_tf) {
+    transforms.push_back(tf2::eigenToTransform(MapFromOdom(odom_.T_map_odom(), T_base_camera)));
+    transforms.back().header = odom_header;
+    transforms.back().header.frame_id = config_.map_frame;
+    transforms.back().child_frame_id = config_.odom_frame;
   }
+  if (config_.publish_tf) {
+    transforms.push_back(tf2::eigenToTransform(T_odom_base));
+    transforms.back().header = odom_header;
+    transforms.back().child_frame_id = config_.base_frame;
+  }
+  if (!transforms.empty()) tf_broadcaster_.sendTransform(transforms);
   nav_msgs::Odometry odom;
   odom.header = odom_header;
   odom.child_frame_id = config_.base_frame;
-  odom.pose.pose = pose;
+  odom.pose.pose = tf2::toMsg(T_odom_base);
+  // The information is of the camera's pose in its own frame; the odom frame's rotation maps it.
   const Eigen::Matrix<double, 6, 6> covariance =
-      OdomCovariance(result.information, result.T_world_camera, T_base_camera);
+      OdomCovariance(result.information, odom_.T_odom_camera(), T_base_camera);
   for (int r = 0; r < 6; ++r) {
     for (int c = 0; c < 6; ++c) odom.pose.covariance[6 * r + c] = covariance(r, c);
   }
   odom_pub_.publish(odom);
-
-  geometry_msgs::PoseStamped stamped;
-  stamped.header = odom_header;
-  stamped.pose = pose;
-  UpdatePath(stamped);
 }
 
 void FramePublisher::UpdatePath(const geometry_msgs::PoseStamped& pose) {
@@ -152,17 +177,16 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
 
 void FramePublisher::PublishVisuals(const FrameResult& result, const RgbdFrame& frame,
                                     const std_msgs::Header& header,
-                                    const std_msgs::Header& odom_header,
-                                    const Eigen::Isometry3d& T_base_camera) {
-  // The odometry world is the first frame's optical frame; odom = base at that frame.
+                                    const std_msgs::Header& world_header,
+                                    const Eigen::Isometry3d& T_frame_world) {
   if (static_pub_.getNumSubscribers() > 0) {
-    static_pub_.publish(MakeLabelledCloud(result.points, true, T_base_camera, odom_header));
+    static_pub_.publish(MakeLabelledCloud(result.points, true, T_frame_world, world_header));
   }
   if (dynamic_pub_.getNumSubscribers() > 0) {
-    dynamic_pub_.publish(MakeLabelledCloud(result.points, false, T_base_camera, odom_header));
+    dynamic_pub_.publish(MakeLabelledCloud(result.points, false, T_frame_world, world_header));
   }
   if (edges_pub_.getNumSubscribers() > 0) {
-    edges_pub_.publish(MakeEdgeMarkers(result.edges, T_base_camera, odom_header));
+    edges_pub_.publish(MakeEdgeMarkers(result.edges, T_frame_world, world_header));
   }
   if (features_pub_.getNumSubscribers() > 0) {
     const cv_bridge::CvImage image(header, "bgr8", DrawFeatures(frame.colour, result.points));

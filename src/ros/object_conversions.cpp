@@ -41,15 +41,15 @@ std_msgs::ColorRGBA IdColour(uint32_t id, float alpha) {
 }  // namespace
 
 dslam::MovingObjects MakeMovingObjects(const std::vector<TrackedObject>& objects,
-                                       const Eigen::Isometry3d& T_base_camera,
-                                       const std_msgs::Header& odom_header) {
+                                       const Eigen::Isometry3d& T_frame_world,
+                                       const std_msgs::Header& header) {
   dslam::MovingObjects message;
-  message.header = odom_header;
-  const Eigen::Matrix3d R = T_base_camera.linear();
+  message.header = header;
+  const Eigen::Matrix3d R = T_frame_world.linear();
   for (const TrackedObject& o : objects) {
     dslam::MovingObject m;
     m.id = static_cast<uint32_t>(o.id);
-    const Eigen::Vector3d p = T_base_camera * o.position_world;
+    const Eigen::Vector3d p = T_frame_world * o.position_world;
     m.position.x = p.x();
     m.position.y = p.y();
     m.position.z = p.z();

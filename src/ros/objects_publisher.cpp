@@ -22,17 +22,17 @@ bool ObjectsPublisher::Wanted() const {
 }
 
 void ObjectsPublisher::Publish(const RgbdFrame& frame, const FrameResult& result,
-                               const std_msgs::Header& odom_header,
-                               const Eigen::Isometry3d& T_base_camera) {
+                               const std_msgs::Header& header,
+                               const Eigen::Isometry3d& T_frame_world) {
   if (!Wanted()) {  // nobody listens: the next subscriber starts with fresh tracks
     if (tracking_) worker_.Post([this] { objects_.Reset(); });
     tracking_ = false;
     return;
   }
   tracking_ = true;
-  worker_.Post([this, frame, result, odom_header, T_base_camera] {
+  worker_.Post([this, frame, result, header, T_frame_world] {
     try {
-      TrackAndPublish(frame, result, odom_header, T_base_camera);
+      TrackAndPublish(frame, result, header, T_frame_world);
     } catch (const std::exception& e) {  // the next frames are still tracked
       ROS_ERROR_THROTTLE(1.0, "dslam: moving objects of a frame skipped: %s", e.what());
     }
@@ -40,10 +40,10 @@ void ObjectsPublisher::Publish(const RgbdFrame& frame, const FrameResult& result
 }
 
 void ObjectsPublisher::TrackAndPublish(const RgbdFrame& frame, const FrameResult& result,
-                                       const std_msgs::Header& odom_header,
-                                       const Eigen::Isometry3d& T_base_camera) {
+                                       const std_msgs::Header& header,
+                                       const Eigen::Isometry3d& T_frame_world) {
   const dslam::MovingObjects message =
-      MakeMovingObjects(objects_.Process(frame, result), T_base_camera, odom_header);
+      MakeMovingObjects(objects_.Process(frame, result), T_frame_world, header);
   if (objects_pub_.getNumSubscribers() > 0) objects_pub_.publish(message);
   if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(MakeObjectMarkers(message));
 }

@@ -37,9 +37,11 @@ void OdometryNodelet::Process(const Input& input) {
   ++processed_;
   const bool new_world = result.reset;  // the odometry's own reset: time went backwards
   if (new_world) {
-    NODELET_WARN("dslam: odometry reset (%s): new run at the origin, new trajectory segment",
-                 result.message.c_str());
-    publisher_->ClearPath();
+    NODELET_WARN(
+        "dslam: odometry reset (%s): new run at the origin (odom and map -> odom restart at the "
+        "identity), new trajectory segment",
+        result.message.c_str());
+    publisher_->StartNewRun();
   }
   if (service_reset) {
     result.reset = true;
@@ -106,10 +108,11 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
   const Eigen::Isometry3d& T_base_camera = CameraMount(header.frame_id, header.stamp);
   const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
   publisher_->Publish(result, frame, header, T_base_camera, Counters(), latency_ms);
-  if (map_publisher_) map_publisher_->SetMount(T_base_camera);
-  std_msgs::Header odom_header = header;
-  odom_header.frame_id = config_.odom_frame;
-  objects_publisher_->Publish(frame, result, odom_header, T_base_camera);
+  const WorldDataFrame world = publisher_->WorldData(T_base_camera);
+  if (map_publisher_) map_publisher_->SetWorldFrame(world.T_frame_world);
+  std_msgs::Header world_header = header;
+  world_header.frame_id = world.frame_id;
+  objects_publisher_->Publish(frame, result, world_header, world.T_frame_world);
 }
 
 FrameCounters OdometryNodelet::Counters() const {

@@ -29,7 +29,7 @@ sensor_msgs::PointCloud2 ToMessage(const ColouredCloud& cloud,
 
 StaticMapPublisher::StaticMapPublisher(ros::NodeHandle& nh, const NodeConfig& config,
                                        std::shared_ptr<const StaticMapper> mapper)
-    : odom_frame_(config.odom_frame), mapper_(std::move(mapper)) {
+    : frame_id_(WorldDataFrameId(config)), mapper_(std::move(mapper)) {
   map_pub_ = nh.advertise<sensor_msgs::PointCloud2>("static_map", 1, /*latch=*/true);
   save_srv_ = nh.advertiseService("save_map", &StaticMapPublisher::OnSave, this);
   timer_ = nh.createWallTimer(ros::WallDuration(1.0 / config.static_map_rate_hz),
@@ -41,25 +41,30 @@ StaticMapPublisher::~StaticMapPublisher() {
   save_srv_.shutdown();
 }
 
-void StaticMapPublisher::SetMount(const Eigen::Isometry3d& T_base_camera) {
+void StaticMapPublisher::SetWorldFrame(const Eigen::Isometry3d& T_frame_world) {
   const std::lock_guard<std::mutex> lock(mutex_);
-  T_base_camera_ = T_base_camera;
+  T_frame_world_ = T_frame_world;
 }
 
 void StaticMapPublisher::OnTimer() {
   if (map_pub_.getNumSubscribers() == 0) return;
-  Eigen::Isometry3d T_odom_world;
+  Eigen::Isometry3d T_frame_world;
   const uint64_t revision = mapper_->revision();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (!T_base_camera_ || published_revision_ == revision) return;
-    T_odom_world = *T_base_camera_;
+    // In odom_frame (no publish_map_tf) the transform changes with each correction.
+    if (!T_frame_world_ || (published_revision_ == revision &&
+                            published_T_frame_world_.matrix() == T_frame_world_->matrix())) {
+      return;
+    }
+    T_frame_world = *T_frame_world_;
     published_revision_ = revision;
+    published_T_frame_world_ = T_frame_world;
   }
   // The cloud is built outside this class's lock (Cloud takes the mapper's).
-  sensor_msgs::PointCloud2 message = ToMessage(mapper_->Cloud(), T_odom_world);
+  sensor_msgs::PointCloud2 message = ToMessage(mapper_->Cloud(), T_frame_world);
   message.header.stamp = ros::Time::now();
-  message.header.frame_id = odom_frame_;
+  message.header.frame_id = frame_id_;
   map_pub_.publish(message);
 }
 

@@ -30,7 +30,7 @@ void Odometry::Reset(ResetMode mode) {
   previous_ = FrameMeasurements();
   last_on_keyframe_ = PoseOnKeyFrame();
   last_tracked_.clear();
-  initialised_ = false;
+  initialised_ = last_frame_posed_ = false;
   frame_index_ = lost_frames_ = 0;
 }
 
@@ -96,8 +96,9 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.mapping_ms = stage.Restart();
 
   lost_frames_ = 0;
-  initialised_ = true;
+  initialised_ = last_frame_posed_ = true;
   result.has_pose = true;
+  result.has_previous_pose = result.has_previous_pose && current.relocalisation_inliers == 0;
   result.T_world_camera = current.T_camera_world.inverse();
   result.information = current.pose.information;
   motion_.Update(frame.stamp_s, result.T_world_camera);
@@ -187,6 +188,10 @@ bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
   last_stamp_s_ = frame.stamp_s;
   result->frame_index = frame_index_++;
   result->stamp_s = frame.stamp_s;
+  // The pose tracking goes on from, with the back end's corrections since the previous frame;
+  // Lost, Initialise and a relocalised pose clear has_previous_pose again.
+  result->has_previous_pose = last_frame_posed_;
+  result->T_world_previous_camera = motion_.last_pose();
   return reset;
 }
 
@@ -220,13 +225,14 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   last_keyframe_frame_ = result.frame_index;
   last_keyframe_static_ = static_cast<int>(ids.size());
   last_tracked_ = ids;
-  initialised_ = true;
+  initialised_ = last_frame_posed_ = true;
   lost_frames_ = 0;
   motion_.Update(result.stamp_s, motion_.last_pose());
   motion_.ForgetVelocity();
   RememberPoseOnNewestKeyFrame(result.frame_index);
   result.state = TrackingState::kInitialised;
-  result.has_pose = first;  // a re-initialisation's pose is assumed, never reported
+  result.has_pose = first;           // a re-initialisation's pose is assumed, never reported
+  result.has_previous_pose = false;  // the map starts here
   result.T_world_camera = motion_.last_pose();
   result.keyframe = true;
   result.counts.new_points = static_cast<int>(ids.size());
@@ -237,8 +243,9 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
 
 FrameResult Odometry::Lost(Current* current, FrameResult result, const char* why) {
   result.state = TrackingState::kLost;
-  result.has_pose = false;
+  result.has_pose = result.has_previous_pose = false;
   result.message = why;
+  last_frame_posed_ = false;
   ++lost_frames_;
   motion_.ForgetVelocity();
   if (lost_frames_ >= config_.tracking.lost_frames_before_reset) initialised_ = false;

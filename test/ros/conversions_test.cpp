@@ -152,6 +152,23 @@ TEST(Conversions, DefaultMountFollowsRep103) {
   EXPECT_TRUE(OdomFromBase(T_world_camera, T).translation().isApprox(Eigen::Vector3d(1, 0, 0)));
 }
 
+TEST(Conversions, MapFromOdomChainsWithOdomFromBase) {
+  // A mount as TF gives it (a rotation whose product with its inverse has round-off).
+  const Eigen::Isometry3d T_base_camera =
+      Eigen::Translation3d(0.1, -0.02, 0.3) * DefaultBaseFromOptical() *
+      Eigen::AngleAxisd(0.1234, Eigen::Vector3d(1.0, 0.3, -0.2).normalized());
+  EXPECT_TRUE(MapFromOdom(Eigen::Isometry3d::Identity(), T_base_camera).matrix() ==
+              Eigen::Matrix4d::Identity());
+  // map -> odom -> base in base frames gives the camera's pose in the map, the map being the
+  // base at the tracker's first frame as odom is the base where odom started.
+  const Eigen::Isometry3d T_map_odom =
+      Eigen::Translation3d(0.02, 0.01, -0.03) * Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY());
+  const Eigen::Isometry3d T_odom_camera =
+      Eigen::Translation3d(0.5, -0.1, 2.0) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitY());
+  EXPECT_TRUE((MapFromOdom(T_map_odom, T_base_camera) * OdomFromBase(T_odom_camera, T_base_camera))
+                  .isApprox(OdomFromBase(T_map_odom * T_odom_camera, T_base_camera), 1e-12));
+}
+
 TEST(Conversions, CovarianceMapsTranslationIntoBaseAxes) {
   // Information: translation along optical z (t of T_camera_world) known to 0.1 m, the rest
   // tightly. At the identity pose the odom x variance must then be 0.01 m^2.

@@ -25,6 +25,8 @@ TEST(NodeConfigDoc, EveryParameterHasARowWithItsDefault) {
   EXPECT_NE(table.find("| `~odom_frame` | `odom` | - |  |"), std::string::npos) << table;
   EXPECT_NE(table.find("| `~queue_size` | 10 | - | [1, 1000] |"), std::string::npos) << table;
   EXPECT_NE(table.find("| `~publish_tf` | true | - |  |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| `~map_frame` | `map` | - |  |"), std::string::npos) << table;
+  EXPECT_NE(table.find("| `~publish_map_tf` | true | - |  |"), std::string::npos) << table;
   int rows = 0;
   const ros_layer::NodeConfig defaults;
   ros_layer::NodeConfig::Fields(defaults, [&](const FieldInfo&, const auto&) { ++rows; });

@@ -13,6 +13,7 @@ XmlRpc::XmlRpcValue Tree() {
   XmlRpc::XmlRpcValue tree;
   tree["queue_size"] = 3;
   tree["odom_frame"] = std::string("world_odom");
+  tree["publish_map_tf"] = false;
   tree["tracking"]["window_keyframes"] = 5;
   tree["dataset"]["association_max_dt_s"] = 0;  // an integer is accepted for a number
   return tree;
@@ -26,6 +27,8 @@ TEST(ParamLoader, ReadsNodeAndCoreKeys) {
   EXPECT_TRUE(warnings.empty());
   EXPECT_EQ(node.queue_size, 3);
   EXPECT_EQ(node.odom_frame, "world_odom");
+  EXPECT_FALSE(node.publish_map_tf);
+  EXPECT_EQ(WorldDataFrameId(node), "world_odom");  // no map frame of ours in TF
   EXPECT_EQ(config.tracking.window_keyframes, 5);
   EXPECT_DOUBLE_EQ(config.dataset.association_max_dt_s, 0.0);
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """rostest: plays a synthetic bag of two walkers (dslam_synth `walking`) into the dslam nodelet and
 checks `moving_objects` (dslam/MovingObjects) and `moving_object_markers` (MarkerArray): messages
-in the odom frame with the images' stamps, walkers found in most frames, plausible sizes and
-speeds, ids that persist across frames, and a box, an arrow and a label per reported object."""
+in the map frame (the tracker's world, ~publish_map_tf true) with the images' stamps, walkers
+found in most frames, plausible sizes and speeds, ids that persist across frames, and a box, an
+arrow and a label per reported object."""
 
 import collections
 import unittest
@@ -32,7 +33,7 @@ class MovingObjectsTest(unittest.TestCase):
 
     def check_objects(self, messages):
         self.assertGreater(len(messages), FRAMES // 2)
-        self.assertTrue(all(m.header.frame_id == "odom" for m in messages))
+        self.assertTrue(all(m.header.frame_id == "map" for m in messages))
         with_objects = [m for m in messages if m.objects]
         frames_by_id = collections.Counter(o.id for m in messages for o in m.objects)
         rospy.loginfo("moving_objects_check: %d messages, %d with objects, ids %s",

@@ -1,18 +1,23 @@
 #!/usr/bin/env python3
 """rostest: plays a freshly generated synthetic bag into the dslam nodelet and checks that
 odometry, TF, both clouds, graph markers and status arrive, and that the saved trajectory matches
-the ground truth within a tolerance after SE(3) alignment (dslam_eval's ATE); that the static map
-arrives on `static_map` (latched: also to a subscriber that comes late) and that `save_map` writes
-it as a PCD file with fields x y z rgb (and fails on a path it cannot write). With the private
-parameter ~expect_backend (odometry_bag_backend.test: the back end on, on its own thread), the
-status messages must also report back-end runs delivered by later frames."""
+the ground truth within a tolerance after SE(3) alignment (dslam_eval's ATE); that map -> odom
+comes with every odometry message and map -> odom -> base is the tracker's pose (the saved
+trajectory), and that the clouds, markers and static map are in the map frame; that the static
+map arrives on `static_map` (latched: also to a subscriber that comes late) and that `save_map`
+writes it as a PCD file with fields x y z rgb (and fails on a path it cannot write). With the
+private parameter ~expect_backend (odometry_bag_backend.test: the back end on, on its own
+thread), the status messages must also report back-end runs delivered by later frames, and its
+corrections must reach map -> odom (without the back end it stays exactly the identity)."""
 
 import os
 import sys
 import tempfile
 import time
+import types
 import unittest
 
+import numpy as np
 import rospkg
 import rospy
 import rostest
@@ -27,11 +32,21 @@ from dslam.srv import SaveMap, SaveTrajectory
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import trajectory as traj  # noqa: E402
 import test_scenes  # noqa: E402 (beside this file)
-from rostest_helpers import Recorder, play_bag  # noqa: E402 (beside this file)
+from rostest_helpers import (Recorder, is_identity, map_odom_transforms, matrix,  # noqa: E402
+                             play_bag)
 
 FRAMES = 60
 ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
 MIN_MAP_POINTS = 10000  # static_room, 60 frames: 24957 points measured (5 cm voxels)
+# The camera mount: the default (DefaultBaseFromOptical), as the test plays no TF; the map frame
+# is the base frame at the first frame, whose optical frame is the saved trajectory's world.
+T_BASE_OPTICAL = np.array([[0, 0, 1, 0], [-1, 0, 0, 0], [0, -1, 0, 0], [0, 0, 0, 1]], float)
+
+
+def tum_matrix(row):
+    """4x4 pose of a TUM trajectory row (stamp tx ty tz qx qy qz qw)."""
+    return matrix(types.SimpleNamespace(x=row[1], y=row[2], z=row[3]),
+                  types.SimpleNamespace(x=row[4], y=row[5], z=row[6], w=row[7]))
 
 
 class OdometryBagTest(unittest.TestCase):
@@ -65,9 +80,44 @@ class OdometryBagTest(unittest.TestCase):
         self.assertLess(ate_m, ATE_TOLERANCE_M)
         statuses = rec.messages("status")
         self.assertTrue(all(s.tracking_ms > 0.0 for s in statuses))
-        if rospy.get_param("~expect_backend", False):
+        expect_backend = rospy.get_param("~expect_backend", False)
+        if expect_backend:
             self.check_backend(statuses)
+        self.check_map_odom(rec, out, expect_backend)
+        for name in ["static_points", "dynamic_points"]:
+            self.assertTrue(all(m.header.frame_id == "map" for m in rec.messages(name)), name)
+        self.assertTrue(all(marker.header.frame_id == "map"
+                            for array in rec.messages("graph_edges") for marker in array.markers))
         self.check_static_map(rec, work)
+
+    def check_map_odom(self, rec, trajectory, expect_corrections):
+        """map -> odom on /tf with each odom message's stamp; map -> odom -> base (odom's pose)
+        is the tracker's pose of the saved trajectory (optical frames), moved into base frames;
+        the identity in every message without the back end, corrections with it."""
+        map_odom = map_odom_transforms(rec)
+        odoms = rec.messages("odom")
+        self.assertEqual(sorted(map_odom), sorted(o.header.stamp.to_nsec() for o in odoms))
+        saved = {"%.6f" % row[0]: tum_matrix(row)
+                 for row in np.loadtxt(trajectory, comments="#", ndmin=2)}
+        worst = 0.0
+        for odom in odoms:
+            T_map_odom = map_odom[odom.header.stamp.to_nsec()].transform
+            T_map_base = (matrix(T_map_odom.translation, T_map_odom.rotation) @
+                          matrix(odom.pose.pose.position, odom.pose.pose.orientation))
+            expected = (T_BASE_OPTICAL @ saved["%.6f" % odom.header.stamp.to_sec()] @
+                        np.linalg.inv(T_BASE_OPTICAL))
+            worst = max(worst, np.abs(T_map_base - expected).max())
+        identity = sum(is_identity(t.transform) for t in map_odom.values())
+        largest = max(np.linalg.norm([t.transform.translation.x, t.transform.translation.y,
+                                      t.transform.translation.z]) for t in map_odom.values())
+        rospy.loginfo("odometry_bag_check: %d map -> odom, %d the identity, largest %.2g m; map "
+                      "-> odom -> base differs from the saved pose by %.2g at most",
+                      len(map_odom), identity, largest, worst)
+        self.assertLess(worst, 1e-5)  # the saved file's 6 and 7 decimals
+        if expect_corrections:
+            self.assertLess(identity, len(map_odom), "no correction reached map -> odom")
+        else:
+            self.assertEqual(identity, len(map_odom))
 
     def check_static_map(self, rec, work):
         """The last static_map message, a late subscriber's latched copy and save_map's file."""
@@ -85,7 +135,7 @@ class OdometryBagTest(unittest.TestCase):
                 break
             rospy.sleep(0.5)
         self.assertEqual(result.points, points)
-        self.assertEqual(cloud.header.frame_id, "odom")
+        self.assertEqual(cloud.header.frame_id, "map")
         self.assertEqual([f.name for f in cloud.fields], ["x", "y", "z", "rgb"])
         rospy.loginfo("odometry_bag_check: static_map with %d points", points)
         self.assertGreater(points, MIN_MAP_POINTS)

@@ -2,9 +2,9 @@
 """rostest: hand-made input sets into the dslam nodelet, one at a time (each waits for its status
 message), checking the documented behaviour of each robustness case (docs/ros-interface.md, "Frames and
 conventions"): skipped sets reported as `rejected`, the reset service keeping the odometry
-continuous, time going backwards starting a new trajectory segment, warnings for frame ids, gaps
-and a missing camera_info, the streamed and saved segment files, the bounded path, and an
-invalid parameter stopping dslam_odometry_node."""
+continuous (and map -> odom), time going backwards starting a new trajectory segment and odom at
+the origin, warnings for frame ids, gaps and a missing camera_info, the streamed and saved
+segment files, the bounded path, and an invalid parameter stopping dslam_odometry_node."""
 
 import os
 import subprocess
@@ -18,10 +18,11 @@ import genpy
 import rospkg
 import rospy
 import rostest
-from nav_msgs.msg import Path
+from nav_msgs.msg import Odometry, Path
 from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import CameraInfo, Image
 from std_srvs.srv import Trigger
+from tf2_msgs.msg import TFMessage
 
 from dslam.msg import FrameStatus
 from dslam.srv import SaveTrajectory
@@ -29,7 +30,7 @@ from dslam.srv import SaveTrajectory
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import dataset, tum_bag  # noqa: E402
 import test_scenes  # noqa: E402 (beside this file)
-from rostest_helpers import Recorder  # noqa: E402 (beside this file)
+from rostest_helpers import Recorder, is_identity, map_odom_transforms  # noqa: E402 (beside)
 from dslam_tools import trajectory as traj  # noqa: E402
 
 FRAMES = 60
@@ -70,7 +71,9 @@ class Node:
                      rospy.Publisher("/camera/rgb/camera_info", CameraInfo, queue_size=5)]
         self.subs = [self.rec.subscribe("/dslam/status", FrameStatus, "status"),
                      self.rec.subscribe("/rosout", Log, "log", queue_size=1000),
-                     self.rec.subscribe("/dslam/path", Path, "path")]
+                     self.rec.subscribe("/dslam/path", Path, "path"),
+                     self.rec.subscribe("/dslam/odom", Odometry, "odom"),
+                     self.rec.subscribe("/tf", TFMessage, "tf", queue_size=1000)]
 
     def path_lengths(self):
         """The number of poses of each path message so far."""
@@ -121,6 +124,7 @@ class RobustnessTest(unittest.TestCase):
         self.check_skipped_sets(seq, node, stamp)
         self.check_reset_service(seq, node, stamp)
         self.check_gap_and_backwards(seq, node, stamp)
+        self.check_map_odom(node, stamp)
         self.check_saved_segments(work, folder, node)
         self.check_missing_camera_info(seq, node)
         path_lengths = node.path_lengths()
@@ -167,6 +171,19 @@ class RobustnessTest(unittest.TestCase):
         self.assertTrue(back.has_pose)  # the first frame of a new run, at the origin
         for i in range(42, FRAMES):
             node.send(seq.messages(i, stamp[0] + 0.5 + (i - 41) / 30.0))
+
+    def check_map_odom(self, node, stamp):
+        """Nothing corrected (no back end) and nothing jumped: map -> odom stays the identity
+        through the reset service (the frame after the re-initialised one is tracked from it)
+        and time going backwards, whose first frame puts odom back at the origin."""
+        map_odom = map_odom_transforms(node.rec)
+        self.assertGreaterEqual(len(map_odom), 30)
+        self.assertTrue(all(is_identity(t.transform) for t in map_odom.values()))
+        # The newest odometry with the stamp of the first frame back (frame 15 had it too).
+        back = [o for o in node.rec.messages("odom")
+                if abs(o.header.stamp.to_sec() - (stamp[0] + 0.5)) < 1e-6][-1]
+        p = back.pose.pose.position
+        self.assertEqual((p.x, p.y, p.z, back.pose.pose.orientation.w), (0.0, 0.0, 0.0, 1.0))
 
     def check_saved_segments(self, work, folder, node):
         out = os.path.join(work, "saved.txt")

@@ -1,10 +1,12 @@
 """What the rostests share beside the scenes (test_scenes.py): a recorder of the messages a test
-subscribes to, and playing a scene's bag into the dslam node."""
+subscribes to, playing a scene's bag into the dslam node, and reading poses and the map -> odom
+transforms of /tf."""
 import collections
 import subprocess
 import threading
 import time
 
+import numpy as np
 import rospy
 
 CAMERA_TOPICS = ["/camera/rgb/image_color", "/camera/depth/image", "/camera/rgb/camera_info"]
@@ -56,3 +58,26 @@ def play_bag(bag, rate=0.5, settle_s=2.0):
     subprocess.check_call(["rosbag", "play", "--quiet", "-r", str(rate), "--wait-for-subscribers",
                            bag, "--topics"] + CAMERA_TOPICS)
     rospy.sleep(settle_s)
+
+
+def matrix(translation, rotation):
+    """4x4 homogeneous matrix of a geometry_msgs translation (or position) and quaternion."""
+    x, y, z, w = rotation.x, rotation.y, rotation.z, rotation.w
+    out = np.identity(4)
+    out[:3, :3] = [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                   [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                   [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
+    out[:3, 3] = [translation.x, translation.y, translation.z]
+    return out
+
+
+def map_odom_transforms(rec, name="tf", map_frame="map", odom_frame="odom"):
+    """{stamp (ns): TransformStamped} of the map -> odom transforms recorded as `name` (/tf)."""
+    return {t.header.stamp.to_nsec(): t for msg in rec.messages(name) for t in msg.transforms
+            if t.header.frame_id == map_frame and t.child_frame_id == odom_frame}
+
+
+def is_identity(transform):
+    """Whether a geometry_msgs/Transform is exactly the identity."""
+    t, q = transform.translation, transform.rotation
+    return (t.x, t.y, t.z, q.x, q.y, q.z, abs(q.w)) == (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)

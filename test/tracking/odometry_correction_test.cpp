@@ -1,6 +1,8 @@
 // The back end refines keyframe poses between frames (Slam): Odometry::AdoptNewestKeyFramePose
 // must carry the last tracked pose along with the newest keyframe, whether or not that keyframe
-// was made from the last tracked frame (in threaded mode it mostly is not).
+// was made from the last tracked frame (in threaded mode it mostly is not); the next frame
+// reports the corrected pose as the one it was tracked from (FrameResult::
+// T_world_previous_camera, which the ROS layer's odom integrates without the correction).
 #include <gtest/gtest.h>
 
 #include "dslam/tracking/odometry.h"
@@ -61,6 +63,32 @@ TEST(OdometryCorrection, LastPoseIsTheNewestKeyFramesWhenItWasMadeFromIt) {
   odometry.AdoptNewestKeyFramePose();
   EXPECT_TRUE(odometry.T_world_last_camera().matrix() ==
               odometry.map().keyframes().back().T_world_camera.matrix());
+}
+
+TEST(OdometryCorrection, EachFrameReportsThePoseItWasTrackedFrom) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  Odometry odometry{Config()};
+  const FrameResult first = odometry.ProcessFrame(room.frames[0]);
+  ASSERT_TRUE(first.has_pose);
+  EXPECT_FALSE(first.has_previous_pose);  // the first frame defines the world
+  Eigen::Isometry3d previous = first.T_world_camera;
+  for (int i = 1; i < 10; ++i) {
+    const FrameResult r = odometry.ProcessFrame(room.frames[i]);
+    ASSERT_TRUE(r.has_pose) << i;
+    EXPECT_TRUE(r.has_previous_pose) << i;
+    // Nothing corrected it: exactly the pose the previous frame reported.
+    EXPECT_TRUE(r.T_world_previous_camera.matrix() == previous.matrix()) << i;
+    previous = r.T_world_camera;
+  }
+  // A correction between frames: the next frame was tracked from the corrected pose.
+  CorrectMap(Correction(), odometry.mutable_map());
+  odometry.AdoptNewestKeyFramePose();
+  const Eigen::Isometry3d corrected = odometry.T_world_last_camera();
+  ASSERT_FALSE(corrected.isApprox(previous, 1e-6));
+  const FrameResult next = odometry.ProcessFrame(room.frames[10]);
+  ASSERT_TRUE(next.has_pose);
+  EXPECT_TRUE(next.has_previous_pose);
+  EXPECT_TRUE(next.T_world_previous_camera.matrix() == corrected.matrix());
 }
 
 }  // namespace

@@ -33,15 +33,23 @@ TEST(OdometryReset, KeepPoseContinuesTheWorldFrame) {
   const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry odometry{Config()};
   for (int i = 0; i < 20; ++i) ASSERT_TRUE(odometry.ProcessFrame(room.frames[i]).has_pose);
+  const Eigen::Isometry3d T_world_19 = odometry.T_world_last_camera();
   odometry.Reset(ResetMode::kKeepPose);
   const FrameResult first = odometry.ProcessFrame(room.frames[20]);
   EXPECT_EQ(first.state, TrackingState::kInitialised);
   EXPECT_FALSE(first.has_pose);  // the assumed pose of a re-initialisation is never reported
-  EXPECT_FALSE(first.reset);     // the caller reset; the frame itself did not
+  EXPECT_FALSE(first.has_previous_pose);
+  EXPECT_FALSE(first.reset);  // the caller reset; the frame itself did not
+  // Frame 21 is tracked from the re-initialised frame, at frame 19's pose.
+  const FrameResult second = odometry.ProcessFrame(room.frames[21]);
+  ASSERT_TRUE(second.has_pose);
+  EXPECT_TRUE(second.has_previous_pose);
+  EXPECT_TRUE(second.T_world_previous_camera.matrix() == T_world_19.matrix());
   // Frame 20 was assumed to be at frame 19's pose: the world after the reset is off by the
   // camera's motion between the two frames (measured 10-12 mm in all, with a step of ~9 mm).
   const double step = (Truth(20, 0).translation() - Truth(19, 0).translation()).norm();
-  for (int i = 21; i < kFrames; ++i) {
+  EXPECT_LT(PositionError(second, 21, 0), step + 0.005);
+  for (int i = 22; i < kFrames; ++i) {
     const FrameResult result = odometry.ProcessFrame(room.frames[i]);
     ASSERT_TRUE(result.has_pose) << i;
     EXPECT_LT(PositionError(result, i, 0), step + 0.005) << i;
@@ -72,11 +80,13 @@ TEST(OdometryReset, TimeGoingBackwardsStartsANewWorld) {
   EXPECT_EQ(back.message, "time went backwards: reset");
   EXPECT_EQ(back.frame_index, 0);
   EXPECT_TRUE(back.has_pose);
+  EXPECT_FALSE(back.has_previous_pose);  // the old world's poses are not this one's
   EXPECT_TRUE(back.T_world_camera.isApprox(Eigen::Isometry3d::Identity()));
   for (int i = 11; i < 20; ++i) {
     const FrameResult result = odometry.ProcessFrame(room.frames[i]);
     EXPECT_FALSE(result.reset);
     ASSERT_TRUE(result.has_pose) << i;
+    EXPECT_TRUE(result.has_previous_pose) << i;
     EXPECT_LT(PositionError(result, i, 10), 0.01) << i;
   }
 }
@@ -153,6 +163,7 @@ TEST(OdometryReset, RelocalisesAfterAnUnpredictedJump) {
   ASSERT_TRUE(with.has_pose) << with.message;
   EXPECT_EQ(with.state, TrackingState::kRecovered);
   EXPECT_NE(with.message.find("relocalised"), std::string::npos) << with.message;
+  EXPECT_FALSE(with.has_previous_pose);  // a jump, not tracked motion (ROS: into map -> odom)
   ExpectAtLaterFrame(with);
 }
 
@@ -192,7 +203,9 @@ TEST(OdometryReset, RelocalisesInTheKeptMapAfterACoveredLens) {
     black.depth_m = cv::Mat::zeros(last.depth_m.size(), CV_32FC1);
     black.stamp_s = last.stamp_s + k / 30.0;
     EXPECT_EQ(off.ProcessFrame(black).state, TrackingState::kLost);
-    EXPECT_EQ(on.ProcessFrame(black).state, TrackingState::kLost);
+    const FrameResult lost = on.ProcessFrame(black);
+    EXPECT_EQ(lost.state, TrackingState::kLost);
+    EXPECT_FALSE(lost.has_previous_pose);
   }
   const FrameResult without = off.ProcessFrame(TurningFrames().later.frame);
   EXPECT_EQ(without.state, TrackingState::kInitialised);
@@ -200,6 +213,7 @@ TEST(OdometryReset, RelocalisesInTheKeptMapAfterACoveredLens) {
   const FrameResult with = on.ProcessFrame(TurningFrames().later.frame);
   ASSERT_TRUE(with.has_pose) << with.message;
   EXPECT_EQ(with.state, TrackingState::kRecovered);
+  EXPECT_FALSE(with.has_previous_pose);  // after lost frames
   ExpectAtLaterFrame(with);
 }
 

@@ -65,12 +65,21 @@ Eigen::Isometry3d DefaultBaseFromOptical();
 Eigen::Isometry3d OdomFromBase(const Eigen::Isometry3d& T_world_camera,
                                const Eigen::Isometry3d& T_base_camera);
 
+/// The map -> odom transform between base frames for OdomIntegrator's T_map_odom (between
+/// optical frames: the tracker's world and odom's origin). The map frame is the base frame at the
+/// tracker's first frame, odom the base frame where odom started: T_map_odom = T_base_camera *
+/// T_map_odom_optical * T_base_camera^-1, exactly the identity when T_map_odom_optical is.
+Eigen::Isometry3d MapFromOdom(const Eigen::Isometry3d& T_map_odom_optical,
+                              const Eigen::Isometry3d& T_base_camera);
+
 /// Row-major 6x6 covariance of T_odom_base in ROS order [x y z rx ry rz] (position in the odom
 /// frame, rotation about the odom axes) from the pose solver's information (FrameResult::
-/// information: [dtheta, dt] of a left perturbation of T_camera_world). Returns `unknown_variance`
-/// on the diagonal when the information is not positive definite (first frame, RANSAC pose).
+/// information: [dtheta, dt] of a left perturbation of T_camera_world, so of the camera's pose in
+/// its own frame) and the camera's pose T_odom_camera in odom (optical frames, OdomIntegrator).
+/// Returns `unknown_variance` on the diagonal when the information is not positive definite
+/// (first frame, RANSAC pose).
 Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& information,
-                                           const Eigen::Isometry3d& T_world_camera,
+                                           const Eigen::Isometry3d& T_odom_camera,
                                            const Eigen::Isometry3d& T_base_camera,
                                            double unknown_variance = 1e6);
 

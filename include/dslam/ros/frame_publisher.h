@@ -1,8 +1,8 @@
 #pragma once
-// Publishes the odometry's per-frame outputs: nav_msgs/Odometry `odom`, nav_msgs/Path `path` (a
-// bounded ring, at a bounded rate), TF odom -> base, dslam/FrameStatus `status`, and - only when
-// subscribed - the PointClouds `static_points` / `dynamic_points`, MarkerArray `graph_edges` and
-// Image `features`.
+// Publishes the odometry's per-frame outputs: nav_msgs/Odometry `odom` (continuous, REP 105:
+// OdomIntegrator), TF map -> odom and odom -> base, nav_msgs/Path `path` (a bounded ring, at a
+// bounded rate), dslam/FrameStatus `status`, and - only when subscribed - the PointClouds
+// `static_points` / `dynamic_points`, MarkerArray `graph_edges` and Image `features`.
 
 #include <cstdint>
 #include <deque>
@@ -17,6 +17,7 @@
 #include "dslam/FrameStatus.h"
 #include "dslam/core/rgbd_frame.h"
 #include "dslam/ros/node_config.h"
+#include "dslam/ros/odom_integrator.h"
 #include "dslam/tracking/frame_result.h"
 
 namespace dslam {
@@ -35,15 +36,25 @@ struct FrameCounters {
 /// (test/ros/status_message_test.cpp checks every pair).
 void FillBackEndStatus(const BackEndStatus& backend, dslam::FrameStatus* status);
 
-/// Owns the output publishers of the odometry nodelet. Call from one thread.
+/// Where the data of the tracker's world (clouds, graph markers, moving objects, static map, path)
+/// is published for one frame.
+struct WorldDataFrame {
+  std::string frame_id;  ///< WorldDataFrameId(config): map_frame or odom_frame
+  /// [m] Maps points of the tracker's world (the first frame's optical frame) into frame_id:
+  /// T_base_camera into the map frame; T_base_camera * T_map_odom^-1 (OdomIntegrator, optical
+  /// frames) into odom.
+  Eigen::Isometry3d T_frame_world = Eigen::Isometry3d::Identity();
+};
+
+/// Owns the output publishers of the odometry nodelet and the odom pose. Call from one thread.
 class FramePublisher {
  public:
   /// Advertises the outputs on `nh` (the nodelet's node handle, relative names).
   FramePublisher(ros::NodeHandle& nh, const NodeConfig& config);
 
-  /// Publishes everything for one processed frame. `header` carries the image stamp and the
-  /// camera's optical frame id; T_base_camera is the camera mount [m]; latency_ms is the wall
-  /// time from receiving the images.
+  /// Publishes everything for one processed frame, after adding its pose to the odom pose.
+  /// `header` carries the image stamp and the camera's optical frame id; T_base_camera is the
+  /// camera mount [m]; latency_ms is the wall time from receiving the images.
   void Publish(const FrameResult& result, const RgbdFrame& frame, const std_msgs::Header& header,
                const Eigen::Isometry3d& T_base_camera, const FrameCounters& counters,
                double latency_ms);
@@ -53,8 +64,16 @@ class FramePublisher {
   void PublishRejected(const std::string& problem, const std_msgs::Header& header,
                        const FrameCounters& counters, double latency_ms);
 
-  /// Empties the path (the odometry started a new run at the origin).
-  void ClearPath() { path_.clear(); }
+  /// The odometry started a new run at the origin (time went backwards): empties the path and
+  /// restarts odom and map -> odom at the identity.
+  void StartNewRun() {
+    path_.clear();
+    odom_.Restart();
+  }
+
+  /// Where the data of the tracker's world goes for the frame last published, with the camera
+  /// mount T_base_camera [m].
+  WorldDataFrame WorldData(const Eigen::Isometry3d& T_base_camera) const;
 
   /// The odometry's per-frame lists someone will see (FrameRequest): points for the clouds and
   /// the feature image, edges for the graph markers.
@@ -62,7 +81,8 @@ class FramePublisher {
   bool WantsEdges() const;
 
  private:
-  void PublishPose(const FrameResult& result, const std_msgs::Header& odom_header,
+  /// `odom` and the TF of the odom pose (odom_), map -> odom with publish_map_tf.
+  void PublishOdom(const FrameResult& result, const std_msgs::Header& odom_header,
                    const Eigen::Isometry3d& T_base_camera);
   /// Appends to the ring of path poses; publishes it at most at path_rate_hz when subscribed.
   void UpdatePath(const geometry_msgs::PoseStamped& pose);
@@ -70,14 +90,16 @@ class FramePublisher {
   void PublishStatus(const FrameResult& result, const std::string& state,
                      const std_msgs::Header& odom_header, const FrameCounters& counters,
                      double latency_ms);
+  /// `world_header`: image stamp, world.frame_id.
   void PublishVisuals(const FrameResult& result, const RgbdFrame& frame,
-                      const std_msgs::Header& header, const std_msgs::Header& odom_header,
-                      const Eigen::Isometry3d& T_base_camera);
+                      const std_msgs::Header& header, const std_msgs::Header& world_header,
+                      const Eigen::Isometry3d& T_frame_world);
 
   NodeConfig config_;
   ros::Publisher odom_pub_, path_pub_, status_pub_;
   ros::Publisher static_pub_, dynamic_pub_, edges_pub_, features_pub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
+  OdomIntegrator odom_;                          ///< the continuous odom pose and map -> odom
   std::deque<geometry_msgs::PoseStamped> path_;  ///< at most path_max_poses, oldest first
   ros::WallTime path_published_;                 ///< last publication of the path
 };

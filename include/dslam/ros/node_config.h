@@ -14,9 +14,11 @@ namespace ros_layer {
 /// table of the ROS layer is generated from it (DescribeNodeConfigMarkdown, a test checks it).
 struct NodeConfig {
   std::string odom_frame = "odom";
+  std::string map_frame = "map";
   std::string base_frame = "base_link";
   std::string camera_frame = "";
   bool publish_tf = true;
+  bool publish_map_tf = true;
   bool exact_sync = false;
   int queue_size = 10;
   std::string camera_yaml = "";
@@ -33,14 +35,25 @@ struct NodeConfig {
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    v(Field("odom_frame", "-", 0, 0, "fixed frame of odometry, path and clouds (REP 105)"),
+    v(Field("odom_frame", "-", 0, 0,
+            "continuous odometry frame (REP 105): odom topic, odom_frame -> base_frame TF"),
       s.odom_frame);
+    v(Field("map_frame", "-", 0, 0,
+            "the tracker's world (REP 105 map: the base frame at the first frame); map_frame -> "
+            "odom_frame takes the back end's corrections and relocalisation jumps"),
+      s.map_frame);
     v(Field("base_frame", "-", 0, 0, "robot body frame, x forward, z up (REP 103)"), s.base_frame);
     v(Field("camera_frame", "-", 0, 0, "colour camera optical frame; empty: image frame id"),
       s.camera_frame);
     v(Flag("publish_tf",
            "broadcast odom_frame -> base_frame TF (and the default mount when TF has none)"),
       s.publish_tf);
+    v(Flag("publish_map_tf",
+           "broadcast map_frame -> odom_frame TF and publish the data of the tracker's world "
+           "(clouds, graph markers, moving objects, static map, path) in map_frame; false where "
+           "another localiser owns map -> odom: our map_frame is then not in TF, so that data "
+           "goes out in odom_frame (moved by the tracker's map -> odom at the frame)"),
+      s.publish_map_tf);
     v(Flag("exact_sync", "ExactTime instead of ApproximateTime"), s.exact_sync);
     v(Field("queue_size", "-", 1, 1000, "synchroniser queue length per input"), s.queue_size);
     v(Field("camera_yaml", "-", 0, 0, "camera.yaml with calibrated intrinsics; empty: camera_info"),
@@ -85,6 +98,12 @@ struct NodeConfig {
       s.static_map_rate_hz);
   }
 };
+
+/// The frame in which the data of the tracker's world (clouds, graph markers, moving objects,
+/// static map, path) is published: map_frame with publish_map_tf, else odom_frame.
+inline const std::string& WorldDataFrameId(const NodeConfig& config) {
+  return config.publish_map_tf ? config.map_frame : config.odom_frame;
+}
 
 /// The Markdown table of every NodeConfig parameter (name with `~`, default, unit, range,
 /// meaning) at its default, as docs/parameters.md shows it (dslam_node_params_doc prints it).

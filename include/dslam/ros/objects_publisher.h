@@ -1,6 +1,7 @@
 #pragma once
 // Publishes the moving objects of each frame: dslam/MovingObjects `moving_objects` and the
-// MarkerArray `moving_object_markers` (object_conversions.h), in the odom frame. The dynamic
+// MarkerArray `moving_object_markers` (object_conversions.h), in the frame of the tracker's world
+// data (WorldDataFrame: map_frame, or odom_frame without publish_map_tf). The dynamic
 // mask and the tracker (part mapping, MovingObjectTracker) run after Slam::ProcessFrame, only
 // while objects.enabled and someone subscribes to either topic (a new subscriber starts with
 // fresh tracks): threaded (~backend_threads), on an OrderedWorker thread of their own that takes
@@ -35,16 +36,17 @@ class ObjectsPublisher {
   /// FrameResult::points (FrameRequest).
   bool Wanted() const;
 
-  /// Tracks the objects of `frame` (its `result`) and publishes them with `odom_header` (image
-  /// stamp, odom frame id); T_base_camera is the camera mount [m]. Threaded, queues the frame
-  /// (its images shared, not copied) and returns, after waiting while two frames are queued.
-  void Publish(const RgbdFrame& frame, const FrameResult& result,
-               const std_msgs::Header& odom_header, const Eigen::Isometry3d& T_base_camera);
+  /// Tracks the objects of `frame` (its `result`) and publishes them with `header` (image stamp,
+  /// WorldDataFrame::frame_id), mapped from the tracker's world by T_frame_world [m]. Threaded,
+  /// queues the frame (its images shared, not copied) and returns, after waiting while two
+  /// frames are queued.
+  void Publish(const RgbdFrame& frame, const FrameResult& result, const std_msgs::Header& header,
+               const Eigen::Isometry3d& T_frame_world);
 
  private:
   /// The objects thread's part of Publish.
   void TrackAndPublish(const RgbdFrame& frame, const FrameResult& result,
-                       const std_msgs::Header& odom_header, const Eigen::Isometry3d& T_base_camera);
+                       const std_msgs::Header& header, const Eigen::Isometry3d& T_frame_world);
 
   bool enabled_;
   bool tracking_ = false;  ///< the tracker was handed the previous frame (the caller's)

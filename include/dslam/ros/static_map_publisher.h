@@ -1,11 +1,12 @@
 #pragma once
 // Publishes the static map (StaticMapper, part mapping, fed by Slam as a keyframe observer):
-// sensor_msgs/PointCloud2 `static_map` (latched, in the odom frame, fields x y z rgb), rebuilt by
-// a wall-clock timer at static_map_rate_hz, only while subscribed and only when the map changed;
-// and the service `save_map` (dslam/SaveMap) writing a PCD file in the odometry world frame.
+// sensor_msgs/PointCloud2 `static_map` (latched, fields x y z rgb, in the frame of the tracker's
+// world data: WorldDataFrameId, map_frame or odom_frame), rebuilt by a wall-clock timer at
+// static_map_rate_hz, only while subscribed and only when the map or its transform changed; and
+// the service `save_map` (dslam/SaveMap) writing a PCD file in the tracker's world frame.
 //
-// Threads: the timer and the service run on ROS callback threads, SetMount on the worker; the
-// mount and the last published revision are guarded by this class's mutex, the map by the
+// Threads: the timer and the service run on ROS callback threads, SetWorldFrame on the worker;
+// the transform and what was last published are guarded by this class's mutex, the map by the
 // mapper's own. Neither is held together with Slam's map mutex (Slam calls the mapper without it).
 
 #include <cstdint>
@@ -32,22 +33,24 @@ class StaticMapPublisher {
   /// Stops the timer (waits for a callback in progress).
   ~StaticMapPublisher();
 
-  /// The camera mount T_base_camera [m] (the odom frame is the base frame at the first frame:
-  /// p_odom = T_base_camera * p_world). Nothing is published before it is known.
-  void SetMount(const Eigen::Isometry3d& T_base_camera);
+  /// The transform of the tracker's world into the published frame, WorldDataFrame::
+  /// T_frame_world [m] (the camera mount into the map frame, the base at the first frame:
+  /// p_map = T_base_camera * p_world). Nothing is published before it is known.
+  void SetWorldFrame(const Eigen::Isometry3d& T_frame_world);
 
  private:
   void OnTimer();
   bool OnSave(dslam::SaveMap::Request& req, dslam::SaveMap::Response& res);
 
-  std::string odom_frame_;
+  std::string frame_id_;  ///< WorldDataFrameId(config)
   std::shared_ptr<const StaticMapper> mapper_;
   ros::Publisher map_pub_;
   ros::ServiceServer save_srv_;
   ros::WallTimer timer_;
-  std::mutex mutex_;                                ///< guards the two members below
-  std::optional<Eigen::Isometry3d> T_base_camera_;  ///< set by the worker
+  std::mutex mutex_;                                ///< guards the three members below
+  std::optional<Eigen::Isometry3d> T_frame_world_;  ///< set by the worker
   std::optional<uint64_t> published_revision_;      ///< of the last message sent
+  Eigen::Isometry3d published_T_frame_world_ = Eigen::Isometry3d::Identity();  ///< of the same
 };
 
 }  // namespace ros_layer

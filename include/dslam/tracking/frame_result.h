@@ -90,6 +90,17 @@ struct FrameResult {
   TrackingState state = TrackingState::kLost;
   bool has_pose = false;  ///< false when lost: T_world_camera is then meaningless
   Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  ///< optical frame -> world
+  /// This frame's pose was tracked from the previous frame's: the previous frame of this world
+  /// ended with a pose tracking went on from (tracked, recovered or (re-)initialised) and this
+  /// frame has a pose not found by relocalisation. False on the first frame, after a lost frame
+  /// or a reset (Odometry::Reset, time going backwards) and on a relocalised frame: the motion
+  /// from the previous pose is then a jump, not measured odometry.
+  bool has_previous_pose = false;
+  /// [optical frame -> world] With has_previous_pose: the previous frame's pose as tracking went
+  /// on from it to this frame (Odometry::T_world_last_camera() when this frame began, so after
+  /// the back end's corrections between the two frames): the tracked motion between the frames is
+  /// T_world_previous_camera^-1 * T_world_camera, whether or not a correction came between.
+  Eigen::Isometry3d T_world_previous_camera = Eigen::Isometry3d::Identity();
   /// Information matrix of the pose (6x6, tangent order [rotation; translation] of a
   /// perturbation applied on the left of T_camera_world; from the final pose solve).
   Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();

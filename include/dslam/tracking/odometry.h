@@ -156,6 +156,9 @@ class Odometry {
   FrameMeasurements previous_;         ///< measurements of the previous tracked frame
   std::vector<PointId> last_tracked_;  ///< points matched in the previous tracked frame
   bool initialised_ = false;
+  /// The last frame of this world ended with a pose tracking goes on from (tracked, recovered or
+  /// (re-)initialised); false after a lost frame and a reset (FrameResult::has_previous_pose).
+  bool last_frame_posed_ = false;
   bool have_stamp_ = false;
   double last_stamp_s_ = 0.0;
   int frame_index_ = 0;
