@@ -203,7 +203,7 @@ def main():
     print("\n".join([
         f"before: {args.reference} ({ref_full}); after: {cur_bin} (checkout {current}"
         f"{', with uncommitted changes' if dirty else ''}); dslam_run_dataset "
-        f"{'--backend on' if args.backend == 'on' else 'defaults'}; seeds "
+        f"{'--backend on' if args.backend == 'on' else 'defaults (back end off)'}; seeds "
         f"{args.seeds}, {args.frames} frames", ""]
         + sequence_table(rows) + [""] + scenario_table(rows) + [""] + verdict_lines(rows)))
 

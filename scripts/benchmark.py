@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Benchmark: accuracy, segmentation and speed of dslam (default parameters) beside two variants
-from the same run: the back end off (front end alone) and static point determination off (the
-static-world baseline).
+from the same run: the back end on (local mapping after keyframes; off by default) and static
+point determination off (the static-world baseline).
 Prints a Markdown table for BENCHMARKS.md.
 
 Synthetic scenarios are rendered once per seed into --cache (seeds 1, 2, 3 averaged); with
@@ -49,12 +49,10 @@ def render(scenario, seed, frames, cache, bin_dir=BIN):
 
 # The variants of every row, run in the same invocation: dslam, and the two baselines.
 VARIANTS = {
-    "dslam": [],                                   # the defaults (back end on, docs/how-it-works.md)
-    "backend_off": ["--backend", "off"],           # the front end alone
+    "dslam": [],                                   # the defaults (back end off, docs/how-it-works.md)
+    "backend_on": ["--backend", "on"],             # local mapping after keyframes
     "static_off": ["--static-points", "off"],      # static-world baseline
 }
-# Every variant evaluate() knows: those above and ones other scripts ask for.
-FLAGS = dict(VARIANTS, backend_on=["--backend", "on"])
 
 
 def evaluate(folder, camera, variant, out_dir, config, run_bin=BIN, eval_bin=BIN):
@@ -65,7 +63,7 @@ def evaluate(folder, camera, variant, out_dir, config, run_bin=BIN, eval_bin=BIN
     summary = os.path.join(out_dir, f"summary_{variant}.json")
     cmd = [os.path.join(run_bin, "dslam_run_dataset"), "--dataset", folder, "--trajectory", traj,
            "--status", os.path.join(out_dir, f"status_{variant}.csv"), "--summary", summary,
-           "--quiet"] + FLAGS.get(variant, [])
+           "--quiet"] + VARIANTS.get(variant, [])
     if camera:
         cmd += ["--camera", camera]
     if config:
@@ -87,12 +85,12 @@ def fmt(value, digits=4):
     return "n/a" if value is None else f"{value:.{digits}f}"
 
 
-HEADER = ("| sequence | ATE [m] | ATE reference [m] | ATE back end off [m] | ATE static points off [m] | "
-          "step median / max [mm] | step back end off [mm] | "
-          "RPE [m/s] | RPE [deg/s] | RPE [deg/s] back end off | tracked | tracked back end off | "
+HEADER = ("| sequence | ATE [m] | ATE reference [m] | ATE back end on [m] | ATE static points off [m] | "
+          "step median / max [mm] | step back end on [mm] | "
+          "RPE [m/s] | RPE [deg/s] | RPE [deg/s] back end on | tracked | tracked back end on | "
           "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | "
-          "back end off: dyn. precision / recall / static wrongly dyn. | "
-          "frame [ms] | frame back end off [ms] | BA [ms] median / p95 | BA keyframes / points | "
+          "back end on: dyn. precision / recall / static wrongly dyn. | "
+          "frame [ms] | frame back end on [ms] | BA [ms] median / p95 | BA keyframes / points | "
           "window SPD [ms] median / p95 | window SPD points / unmarked |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 
@@ -126,24 +124,24 @@ def steps(result):
 
 
 def row(name, results):
-    on, front_end, no_static = (results[v] for v in ("dslam", "backend_off", "static_off"))
+    on, backend, no_static = (results[v] for v in ("dslam", "backend_on", "static_off"))
     moving = has_movers(on)
     seg = segmentation(on, moving) + f" | {on['labelled_dynamic_share']:.4f}"
-    seg += " | " + segmentation(front_end, moving).replace(" | ", " / ")
+    seg += " | " + segmentation(backend, moving).replace(" | ", " / ")
     tracked = on["frames_with_pose"] / max(on["frames"], 1)
-    tracked_front_end = front_end["frames_with_pose"] / max(front_end["frames"], 1)
+    tracked_backend = backend["frames_with_pose"] / max(backend["frames"], 1)
     reference = f"{results['reference']['ate_rmse_m']:.4f}" if "reference" in results else "-"
-    return (f"| {name} | {on['ate_rmse_m']:.4f} | {reference} | {front_end['ate_rmse_m']:.4f} | "
-            f"{no_static['ate_rmse_m']:.4f} | {steps(on)} | {steps(front_end)} | "
+    return (f"| {name} | {on['ate_rmse_m']:.4f} | {reference} | {backend['ate_rmse_m']:.4f} | "
+            f"{no_static['ate_rmse_m']:.4f} | {steps(on)} | {steps(backend)} | "
             f"{fmt(on.get('rpe_trans_rmse_m_per_s'))} | "
             f"{fmt(on.get('rpe_rot_rmse_deg_per_s'), 2)} | "
-            f"{fmt(front_end.get('rpe_rot_rmse_deg_per_s'), 2)} | {tracked:.3f} | "
-            f"{tracked_front_end:.3f} | {seg} | {on['median_frame_ms']:.1f} | "
-            f"{front_end['median_frame_ms']:.1f} | "
-            f"{on['median_ba_ms']:.1f} / {on['p95_ba_ms']:.1f} | "
-            f"{on['median_ba_keyframes']:.0f} / {on['median_ba_points']:.0f} | "
-            f"{on['median_spd_ms']:.1f} / {on['p95_spd_ms']:.1f} | "
-            f"{on['median_spd_points']:.0f} / {on['median_spd_unmarked']:.0f} |")
+            f"{fmt(backend.get('rpe_rot_rmse_deg_per_s'), 2)} | {tracked:.3f} | "
+            f"{tracked_backend:.3f} | {seg} | {on['median_frame_ms']:.1f} | "
+            f"{backend['median_frame_ms']:.1f} | "
+            f"{backend['median_ba_ms']:.1f} / {backend['p95_ba_ms']:.1f} | "
+            f"{backend['median_ba_keyframes']:.0f} / {backend['median_ba_points']:.0f} | "
+            f"{backend['median_spd_ms']:.1f} / {backend['p95_spd_ms']:.1f} | "
+            f"{backend['median_spd_points']:.0f} / {backend['median_spd_unmarked']:.0f} |")
 
 
 def mean_of(results):

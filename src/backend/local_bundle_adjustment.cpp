@@ -171,21 +171,26 @@ std::vector<bool> WithinChi2(const Window& window, double chi2, const Map* map =
   return inliers;
 }
 
-// The sum of squared whitened residuals e^T C_ik^-1 e of all measurements (the final chi-square
-// test's outliers included) over the degrees of freedom: 3 per measurement, less 3 per point and
-// 6 per keyframe free in the solve (not among the oldest `fixed_keyframes`, with at least
+// The sum of squared whitened residuals e^T C_ik^-1 e of the measurements flagged in `counted`
+// over their degrees of freedom: 3 per measurement, less 3 per point they measure and 6 per
+// keyframe free in the solve (not among the oldest `fixed_keyframes`, with at least
 // kMinKeyFramePoints of the `used` measurements). 0 when there are none.
-double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& used,
-                              int fixed_keyframes) {
+double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& counted,
+                              const std::vector<bool>& used, int fixed_keyframes) {
   double chi2 = 0.0;
+  int measurements = 0;
   std::vector<int> per_keyframe(window.poses.size(), 0);
+  std::unordered_map<PointId, int> points;
   for (size_t i = 0; i < window.measurements.size(); ++i) {
     const Measurement& m = window.measurements[i];
+    if (used[i]) ++per_keyframe[m.keyframe];
+    if (!counted[i]) continue;
     const KeyFramePose& pose = window.poses[m.keyframe];
     const Eigen::Vector3d e =
         pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
     chi2 += e.dot(m.value->covariance.inverse() * e);
-    if (used[i]) ++per_keyframe[m.keyframe];
+    ++measurements;
+    ++points[m.point];
   }
   int free_keyframes = 0;
   for (size_t k = 0; k < per_keyframe.size(); ++k) {
@@ -193,8 +198,7 @@ double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& use
       ++free_keyframes;
     }
   }
-  const int dof = 3 * static_cast<int>(window.measurements.size()) -
-                  3 * static_cast<int>(window.points.size()) - 6 * free_keyframes;
+  const int dof = 3 * measurements - 3 * static_cast<int>(points.size()) - 6 * free_keyframes;
   return dof > 0 ? chi2 / dof : 0.0;
 }
 
@@ -290,7 +294,10 @@ LocalBaStats LocalBundleAdjustment(const Config& full_config, Map* map) {
   use = WithinChi2(window, chi2);
   stats.iterations += SolveRound(full_config, use, &window);
   const std::vector<bool> inliers = WithinChi2(window, chi2);
-  stats.chi2_per_dof = Chi2PerDegreeOfFreedom(window, use, config.ba_fixed_keyframes);
+  const std::vector<bool> all(window.measurements.size(), true);
+  stats.chi2_per_dof = Chi2PerDegreeOfFreedom(window, all, use, config.ba_fixed_keyframes);
+  stats.inlier_chi2_per_dof =
+      Chi2PerDegreeOfFreedom(window, inliers, use, config.ba_fixed_keyframes);
   const CorrectionSize correction = LargestCorrection(window, *map);
   stats.largest_correction_m = correction.metres;
   stats.largest_correction_deg = correction.degrees;

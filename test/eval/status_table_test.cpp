@@ -35,8 +35,8 @@ TEST(StatusTable, CsvColumnsKeepTheirNamesAndOrder) {
             "candidates,pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
             "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,"
             "total_ms,tracking_ms,backlog,backend_delivered,window_keyframes,ba_points,"
-            "ba_measurements,ba_outliers,ba_iterations,ba_chi2_per_dof,ba_ms,spd_points,"
-            "spd_culled_edges,spd_unmarked,spd_ms");
+            "ba_measurements,ba_outliers,ba_iterations,ba_chi2_per_dof,ba_inlier_chi2_per_dof,ba_ms,"
+            "spd_points,spd_culled_edges,spd_unmarked,spd_ms");
 }
 
 TEST(StatusTable, SummaryKeysKeepTheirNamesAndOrder) {
@@ -44,7 +44,8 @@ TEST(StatusTable, SummaryKeysKeepTheirNamesAndOrder) {
             (std::vector<std::string>{"ba_ms", "ba_keyframes", "ba_points", "ba_outliers",
                                       "ba_iterations", "spd_ms", "spd_graph_ms", "spd_culling_ms",
                                       "spd_components_ms", "spd_points", "spd_edges",
-                                      "spd_culled_edges", "spd_unmarked", "ba_chi2_per_dof"}));
+                                      "spd_culled_edges", "spd_unmarked", "ba_chi2_per_dof",
+                                      "ba_inlier_chi2_per_dof"}));
   JsonObject json;
   AddBackEndQuantiles(RunSummary(), 6, &json);
   const std::string text = json.ToString();
@@ -88,7 +89,7 @@ TEST(StatusTable, CsvValuesFollowTheHeader) {
   const std::vector<std::string> values = Split(BackEndCsvValues(status), ',');
   ASSERT_EQ(columns.size(), values.size());
   for (size_t i = 0; i < columns.size(); ++i) EXPECT_EQ(values[i], expected.at(columns[i]));
-  EXPECT_EQ(BackEndCsvValues(BackEndStatus()), "0,0,0,0,0,0.000,0.000,0,0,0,0.000");
+  EXPECT_EQ(BackEndCsvValues(BackEndStatus()), "0,0,0,0,0,0.000,0.000,0.000,0,0,0,0.000");
 }
 
 TEST(StatusTable, QuantilesAreOverTheRunsOfTheirStage) {

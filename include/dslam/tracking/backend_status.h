@@ -29,6 +29,9 @@ struct LocalBaStats {
   /// freedom (3 x measurements - 3 x points - 6 x free keyframes): about 1 when the noise model
   /// fits the measurements and nothing moved
   double chi2_per_dof = 0.0;
+  /// [-] the same over the final chi-square test's inliers alone (their count, the points and
+  /// free keyframes they measure): the fit of the bulk, without mismatches and moved points
+  double inlier_chi2_per_dof = 0.0;
   double time_ms = 0.0;  ///< [ms] wall time
   /// [m], [deg] largest move of a keyframe's camera centre and rotation from the front end's pose
   double largest_correction_m = 0.0, largest_correction_deg = 0.0;
@@ -82,6 +85,9 @@ struct BackEndStatus {
     v(StatusField("ba_chi2_per_dof", "-", kBa, kCsv, 13,
                   "squared whitened residuals over the degrees of freedom (1: the noise fits)"),
       s.ba.chi2_per_dof);
+    v(StatusField("ba_inlier_chi2_per_dof", "-", kBa, kCsv, 14,
+                  "the same over the chi-square test's inliers alone"),
+      s.ba.inlier_chi2_per_dof);
     v(StatusField("ba_ms", "ms", kBa, kBoth, 0, "its wall-clock time"), s.ba.time_ms);
     v(StatusField("spd_ran", "-", kSpd, kMsg, -1, "ran after this frame"), s.spd.ran);
     v(StatusField("spd_keyframes", "-", kSpd, 0, -1,
