@@ -119,7 +119,7 @@ class Map {
   void Erase(PointId id);
 
   /// Appends a keyframe (its id is assigned), chooses the window for it (SelectKeyFrameWindow),
-  /// archives the keyframes that left the window, erases archived keyframes that are redundant
+  /// archives the keyframes that left the window, erases those of them that are redundant now
   /// (map.cpp: kRedundantShare of their points observed by kRedundantObservers other keyframes)
   /// and then the oldest archived ones beyond `limits.max_keyframes` (at least the window's size).
   const KeyFrame& AddKeyFrame(KeyFrame keyframe, const KeyFrameMapLimits& limits);
