@@ -60,10 +60,6 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   const Eigen::Isometry3d T_camera_world_predicted =
       motion_.Predict(frame.stamp_s, max_gap_s).inverse();
   const bool wide = lost_frames_ > 0 || motion_.IsGap(frame.stamp_s, max_gap_s);
-  if (config_.pose.prior_sigma_m > 0.0 && !wide && motion_.has_velocity()) {
-    current.prior = PosePrior{T_camera_world_predicted, config_.pose.prior_sigma_m,
-                              config_.pose.prior_sigma_deg * M_PI / 180.0};
-  }
   MatchLocalMapPoints(&current, T_camera_world_predicted, wide);
   result.times.matching_ms = stage.Restart();
 

@@ -72,14 +72,13 @@ bool Odometry::EnoughInliers(const PoseResult& pose) const {
 PoseResult Odometry::SolvePoseFromStaticPoints(const Current& current,
                                                const Eigen::Isometry3d& T_camera_world) const {
   const PinholeCamera& camera = *current.frame->camera;
-  const PosePrior* prior = current.prior ? &*current.prior : nullptr;
   PoseResult verified =
       EstimatePoseFromMatches(map_, current.matches, current.features, camera, T_camera_world,
-                              PointSelection::kVerified, current.excluded, config_, prior);
+                              PointSelection::kVerified, current.excluded, config_);
   if (EnoughInliers(verified)) return verified;
   // Too few verified points (new scene parts): candidates help until they are verified.
   return EstimatePoseFromMatches(map_, current.matches, current.features, camera, T_camera_world,
-                                 PointSelection::kMarked, current.excluded, config_, prior);
+                                 PointSelection::kMarked, current.excluded, config_);
 }
 
 PoseResult Odometry::RobustPose(const Current& current, PointSelection voters,
@@ -163,8 +162,6 @@ void Odometry::DetermineFrontEndLabels(Current* current, FrameResult* result) {
 }
 
 bool Odometry::RefinePoseWithStaticPoints(Current* current, FrameResult* result) {
-  // A RANSAC or relocalised initial pose disagrees with the prediction for a reason.
-  if (current->from_robust_pose || current->relocalisation_inliers > 0) current->prior.reset();
   if (!SolvePose(current, current->T_camera_world,
                  static_cast<uint32_t>(result->frame_index) + 1u)) {
     return false;

@@ -54,13 +54,12 @@ PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>
                                    const FrameFeatures& features, const PinholeCamera& camera,
                                    const Eigen::Isometry3d& T_camera_world_init,
                                    PointSelection selection, const std::vector<bool>& excluded,
-                                   const Config& config, const PosePrior* prior) {
+                                   const Config& config) {
   const Observations obs =
       BuildObservations(map, matches, features, T_camera_world_init.rotation(), selection, excluded,
                         config.depth_noise.pixel_sigma_px);
-  return ToMatches(EstimatePose(obs.observations, T_camera_world_init, camera, config.pose, nullptr,
-                                PoseSolver::kLevenbergMarquardt, prior),
-                   obs, matches.size());
+  return ToMatches(EstimatePose(obs.observations, T_camera_world_init, camera, config.pose), obs,
+                   matches.size());
 }
 
 PoseResult EstimateRobustPoseFromMatches(const Map& map, const std::vector<PointMatch>& matches,

@@ -93,51 +93,17 @@ double SquaredError(const PoseObservation& o, const Eigen::Isometry3d& T_camera_
   return ((camera.Project(p) - o.uv_ideal) / o.pixel_sigma_px).squaredNorm();
 }
 
-namespace {
-
-/// `observations` and, with a prior, four pseudo observations of it: the predicted camera centre
-/// (sigma_m) and unit points on the predicted camera axes (sigma_rad x 1 m).
-std::vector<PoseObservation> WithPrior(const std::vector<PoseObservation>& observations,
-                                       const PosePrior& prior) {
-  std::vector<PoseObservation> all = observations;
-  const Eigen::Isometry3d T_world_camera = prior.T_camera_world.inverse();
-  for (int axis = -1; axis < 3; ++axis) {
-    PoseObservation o;
-    o.has_depth = true;
-    o.y_camera = Eigen::Vector3d::Zero();
-    if (axis >= 0) o.y_camera[axis] = 1.0;
-    o.p_world = T_world_camera * o.y_camera;
-    const double sigma = axis < 0 ? prior.sigma_m : prior.sigma_rad;
-    o.covariance = sigma * sigma * Eigen::Matrix3d::Identity();
-    all.push_back(o);
-  }
-  return all;
-}
-
-}  // namespace
-
-PoseResult EstimatePose(const std::vector<PoseObservation>& real_observations,
+PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
                         const Eigen::Isometry3d& T_camera_world_guess, const PinholeCamera& camera,
                         const PoseConfig& config, const std::vector<bool>* initial_inliers,
-                        PoseSolver solver_kind, const PosePrior* prior) {
-  std::vector<PoseObservation> with_prior;
-  if (prior != nullptr) with_prior = WithPrior(real_observations, *prior);
-  const std::vector<PoseObservation>& observations =
-      prior != nullptr ? with_prior : real_observations;
-  const size_t num_real = real_observations.size();
+                        PoseSolver solver_kind) {
   PoseResult result;
   result.T_camera_world = T_camera_world_guess;
   result.inliers.assign(observations.size(), true);
-  if (initial_inliers && initial_inliers->size() == num_real) {
-    std::copy(initial_inliers->begin(), initial_inliers->end(), result.inliers.begin());
+  if (initial_inliers && initial_inliers->size() == observations.size()) {
+    result.inliers = *initial_inliers;
   }
-  const auto finish = [&] {
-    result.inliers.resize(num_real);
-    return result;
-  };
-  if (std::count(result.inliers.begin(), result.inliers.begin() + num_real, true) < 3) {
-    return finish();
-  }
+  if (std::count(result.inliers.begin(), result.inliers.end(), true) < 3) return result;
   Eigen::Quaterniond q(T_camera_world_guess.rotation());
   Eigen::Vector3d t = T_camera_world_guess.translation();
   const bool use_ceres = solver_kind == PoseSolver::kCeres;
@@ -152,11 +118,11 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& real_observations,
     result.iterations += summary.iterations;
     result.final_cost = summary.final_cost;
     result.success = summary.usable;
-    if (!result.success) return finish();
+    if (!result.success) return result;
     q.normalize();
     result.T_camera_world = ToIsometry(q, t);
     result.num_inliers = 0;
-    for (size_t i = 0; i < num_real; ++i) {
+    for (size_t i = 0; i < observations.size(); ++i) {
       const double chi2 = observations[i].has_depth ? config.chi2_depth : config.chi2_pixel;
       result.inliers[i] = WhitenedSquaredError(observations[i], sqrt_information[i],
                                                result.T_camera_world, camera) < chi2;
@@ -164,15 +130,15 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& real_observations,
     }
     if (result.num_inliers < 3) {
       result.success = false;
-      return finish();
+      return result;
     }
   }
-  for (size_t i = 0; i < num_real; ++i) {
+  for (size_t i = 0; i < observations.size(); ++i) {
     if (!result.inliers[i]) continue;
     AddInformation(observations[i], sqrt_information[i], result.T_camera_world, camera,
                    &result.information);
   }
-  return finish();
+  return result;
 }
 
 Eigen::Matrix<double, 6, 6> PerturbationToWorldCamera(const Eigen::Isometry3d& T_camera_world) {

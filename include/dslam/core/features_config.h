@@ -64,8 +64,6 @@ struct PoseConfig {
   double chi2_pixel = 5.991;
   int rounds = 4;
   int max_iterations = 10;
-  double prior_sigma_m = 0.0;
-  double prior_sigma_deg = 2.0;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -79,15 +77,6 @@ struct PoseConfig {
     v(Field("rounds", "-", 1, 20, "optimise/classify rounds"), s.rounds);
     // Levenberg-Marquardt iterations.
     v(Field("max_iterations", "-", 1, 1000, "solver iterations per round"), s.max_iterations);
-    // The tracker's pose solves add the constant-velocity prediction as a prior: a pseudo
-    // observation of the camera centre (this sigma) and of unit points on its axes
-    // (prior_sigma_deg). 0: no prior.
-    v(Field("prior_sigma_m", "m", 0.0, 10.0,
-            "sigma of the predicted camera centre in the pose solve (0: no motion prior)"),
-      s.prior_sigma_m);
-    v(Field("prior_sigma_deg", "deg", 0.01, 180.0,
-            "sigma of the predicted rotation in the pose solve"),
-      s.prior_sigma_deg);
   }
 };
 

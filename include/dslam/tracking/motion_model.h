@@ -35,7 +35,6 @@ class ConstantVelocityModel {
   }
 
   bool has_pose() const { return has_pose_; }
-  bool has_velocity() const { return has_velocity_; }  ///< two poses known since the last reset
   const Eigen::Isometry3d& last_pose() const { return T_world_last_; }
 
  private:

@@ -3,7 +3,6 @@
 // points drive motion estimation, with front-end static point determination every frame.
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,8 +73,6 @@ class Odometry {
     std::vector<PointMatch> matches;
     std::vector<bool> excluded;  ///< per match: left out of the refined pose (isolated/dynamic)
     Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
-    /// The constant-velocity prediction as a prior of the static-point pose solves (pose.prior_*)
-    std::optional<PosePrior> prior;
     PoseResult pose;
     FrontEndGraph graph;  ///< built beside the initial pose, used by the static points
     FrontEndStaticPoints static_points;

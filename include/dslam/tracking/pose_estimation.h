@@ -32,7 +32,7 @@ PoseResult EstimatePoseFromMatches(const Map& map, const std::vector<PointMatch>
                                    const FrameFeatures& features, const PinholeCamera& camera,
                                    const Eigen::Isometry3d& T_camera_world_init,
                                    PointSelection selection, const std::vector<bool>& excluded,
-                                   const Config& config, const PosePrior* prior = nullptr);
+                                   const Config& config);
 
 /// RANSAC over the 3D-3D correspondences of the matches whose map point is `selection`, refined
 /// by motion-only BA; `inliers` parallel to `matches` (matches left out: false). Deterministic for

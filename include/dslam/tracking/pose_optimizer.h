@@ -56,14 +56,6 @@ struct PoseResult {
 /// trajectories, slower).
 enum class PoseSolver { kLevenbergMarquardt, kCeres };
 
-/// A prior on the pose: the camera centre within `sigma_m` [m] and the rotation within
-/// `sigma_rad` [rad] of `T_camera_world` (e.g. the constant-velocity prediction).
-struct PosePrior {
-  Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
-  double sigma_m = 0.0;
-  double sigma_rad = 0.0;
-};
-
 /// Motion-only BA from `T_camera_world_guess`; see the top of this file. `camera` supplies the
 /// intrinsics of the pixel residuals. Huber widths apply to the whitened residual norm. The first
 /// round uses the observations flagged in `initial_inliers` (all when null or empty).
@@ -71,8 +63,7 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
                         const Eigen::Isometry3d& T_camera_world_guess, const PinholeCamera& camera,
                         const PoseConfig& config,
                         const std::vector<bool>* initial_inliers = nullptr,
-                        PoseSolver solver = PoseSolver::kLevenbergMarquardt,
-                        const PosePrior* prior = nullptr);
+                        PoseSolver solver = PoseSolver::kLevenbergMarquardt);
 
 /// Squared Mahalanobis error of one observation at a pose (3 dof with depth, 2 dof without).
 double SquaredError(const PoseObservation& observation, const Eigen::Isometry3d& T_camera_world,
