@@ -30,7 +30,7 @@ void Odometry::Reset(ResetMode mode) {
   previous_ = FrameMeasurements();
   last_on_keyframe_ = PoseOnKeyFrame();
   last_tracked_.clear();
-  initialised_ = last_frame_posed_ = false;
+  initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
 
@@ -96,7 +96,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.mapping_ms = stage.Restart();
 
   lost_frames_ = 0;
-  initialised_ = last_frame_posed_ = true;
+  initialised_ = true;
   result.has_pose = true;
   result.has_previous_pose = result.has_previous_pose && current.relocalisation_inliers == 0;
   result.T_world_camera = current.T_camera_world.inverse();
@@ -190,7 +190,7 @@ bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
   result->stamp_s = frame.stamp_s;
   // The pose tracking goes on from, with the back end's corrections since the previous frame;
   // Lost, Initialise and a relocalised pose clear has_previous_pose again.
-  result->has_previous_pose = last_frame_posed_;
+  result->has_previous_pose = LastFramePosed();
   result->T_world_previous_camera = motion_.last_pose();
   return reset;
 }
@@ -225,7 +225,7 @@ FrameResult Odometry::Initialise(Current* current, FrameResult result) {
   last_keyframe_frame_ = result.frame_index;
   last_keyframe_static_ = static_cast<int>(ids.size());
   last_tracked_ = ids;
-  initialised_ = last_frame_posed_ = true;
+  initialised_ = true;
   lost_frames_ = 0;
   motion_.Update(result.stamp_s, motion_.last_pose());
   motion_.ForgetVelocity();
@@ -245,7 +245,6 @@ FrameResult Odometry::Lost(Current* current, FrameResult result, const char* why
   result.state = TrackingState::kLost;
   result.has_pose = result.has_previous_pose = false;
   result.message = why;
-  last_frame_posed_ = false;
   ++lost_frames_;
   motion_.ForgetVelocity();
   if (lost_frames_ >= config_.tracking.lost_frames_before_reset) initialised_ = false;

@@ -134,6 +134,9 @@ class Odometry {
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(int static_matches) const;
+  /// The last frame of this world ended with a pose tracking goes on from (tracked, recovered or
+  /// (re-)initialised); false after a lost frame and a reset (FrameResult::has_previous_pose).
+  bool LastFramePosed() const { return initialised_ && lost_frames_ == 0; }
   /// The keyframe map's limits from tracking.window_keyframes, covisible_keyframes, max_keyframes.
   KeyFrameMapLimits MapLimits() const;
   /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
@@ -156,9 +159,6 @@ class Odometry {
   FrameMeasurements previous_;         ///< measurements of the previous tracked frame
   std::vector<PointId> last_tracked_;  ///< points matched in the previous tracked frame
   bool initialised_ = false;
-  /// The last frame of this world ended with a pose tracking goes on from (tracked, recovered or
-  /// (re-)initialised); false after a lost frame and a reset (FrameResult::has_previous_pose).
-  bool last_frame_posed_ = false;
   bool have_stamp_ = false;
   double last_stamp_s_ = 0.0;
   int frame_index_ = 0;
