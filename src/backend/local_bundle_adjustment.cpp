@@ -148,6 +148,13 @@ int SolveRound(const Config& full_config, const std::vector<bool>& use, Window* 
   return static_cast<int>(summary.iterations.size());
 }
 
+// R_k p_i + t_k - y_ik of measurement `m` at the window's current poses and points (paper
+// Eq. rgbd_yik before whitening) [m].
+Eigen::Vector3d Residual(const Window& window, const Measurement& m) {
+  const KeyFramePose& pose = window.poses[m.keyframe];
+  return pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
+}
+
 // Flags the measurements whose squared Mahalanobis error e^T C^-1 e is at most `chi2`, with C the
 // measurement's C_ik, plus R C_point R^T when `map` is given (the map point's own uncertainty).
 // With the map: the measurements consistent with the front end's keyframe poses and map
@@ -159,8 +166,7 @@ std::vector<bool> WithinChi2(const Window& window, double chi2, const Map* map =
   for (size_t i = 0; i < window.measurements.size(); ++i) {
     const Measurement& m = window.measurements[i];
     const KeyFramePose& pose = window.poses[m.keyframe];
-    const Eigen::Vector3d e =
-        pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
+    const Eigen::Vector3d e = Residual(window, m);
     Eigen::Matrix3d covariance = m.value->covariance;
     if (map != nullptr) {
       covariance +=
@@ -185,9 +191,7 @@ double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& cou
     const Measurement& m = window.measurements[i];
     if (used[i]) ++per_keyframe[m.keyframe];
     if (!counted[i]) continue;
-    const KeyFramePose& pose = window.poses[m.keyframe];
-    const Eigen::Vector3d e =
-        pose.q_camera_world * window.points.at(m.point) + pose.t_camera_world - m.value->y_camera;
+    const Eigen::Vector3d e = Residual(window, m);
     chi2 += e.dot(m.value->covariance.inverse() * e);
     ++measurements;
     ++points[m.point];
