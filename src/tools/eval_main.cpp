@@ -3,6 +3,7 @@
 //   dslam_eval --groundtruth GT --trajectory EST [--camera camera.yaml] [--frames rgb.txt]
 //              [--json OUT.json] [--write-groundtruth OUT.txt] [--save-aligned OUT.txt]
 //              [--save-groundtruth OUT.txt] [--max-dt S] [--rpe-interval S] [--max-gap S]
+//              [--loops LOOPS.txt]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "dslam/eval/groundtruth_correction.h"
 #include "dslam/eval/json_writer.h"
+#include "dslam/eval/loop_check.h"
 #include "dslam/eval/trajectory_metrics.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
@@ -24,7 +26,7 @@ constexpr char kUsage[] =
     "usage: dslam_eval --groundtruth GT.txt --trajectory EST.txt [--camera camera.yaml]\n"
     "                  [--frames rgb.txt] [--json OUT.json] [--write-groundtruth OUT.txt]\n"
     "                  [--save-aligned OUT.txt] [--save-groundtruth OUT.txt]\n"
-    "                  [--max-dt S] [--rpe-interval S] [--max-gap S]\n"
+    "                  [--max-dt S] [--rpe-interval S] [--max-gap S] [--loops LOOPS.txt]\n"
     "  --groundtruth   ground truth, TUM format (timestamp tx ty tz qx qy qz qw)\n"
     "  --trajectory    estimated trajectory T_world_camera, TUM format\n"
     "  --camera        camera.yaml; 'groundtruth_correction: bonn' converts the Bonn marker\n"
@@ -40,7 +42,9 @@ constexpr char kUsage[] =
     "                  --save-aligned\n"
     "  --max-dt        association tolerance [s] (default 0.02)\n"
     "  --rpe-interval  RPE interval [s] (default 1.0)\n"
-    "  --max-gap       longest gap between estimates counted as covered [s] (default 0.1)\n";
+    "  --max-gap       longest gap between estimates counted as covered [s] (default 0.1)\n"
+    "  --loops         accepted loops of dslam_run_dataset --loops: each relative pose is checked\n"
+    "                  against the ground truth; false when off by more than 0.10 m or 3 deg\n";
 
 class UsageError : public std::runtime_error {
  public:
@@ -54,8 +58,8 @@ struct Arguments {
 
 Arguments ParseArguments(int argc, char** argv) {
   static const std::vector<std::string> kKnown = {
-      "groundtruth",  "trajectory",       "camera", "frames",       "json",   "write-groundtruth",
-      "save-aligned", "save-groundtruth", "max-dt", "rpe-interval", "max-gap"};
+      "groundtruth",  "trajectory",       "camera", "frames",       "json",    "write-groundtruth",
+      "save-aligned", "save-groundtruth", "max-dt", "rpe-interval", "max-gap", "loops"};
   Arguments args;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -160,6 +164,34 @@ dslam::JsonObject MetricsJson(const dslam::TrajectoryMetrics& m, const Arguments
   return json;
 }
 
+// --loops: prints each false loop and the counts, adds them to the JSON.
+void CheckLoopFile(const std::string& path, const dslam::Trajectory& groundtruth,
+                   dslam::JsonObject* json) {
+  const dslam::LoopCheckOptions options;
+  const dslam::LoopCheck check = dslam::CheckLoops(dslam::ReadLoopFile(path), groundtruth, options);
+  for (const dslam::LoopVerdict& v : check.verdicts) {
+    if (!v.checked) {
+      std::printf("loop %.6f -> %.6f: no ground truth at its stamps, not checked\n",
+                  v.loop.stamp_query_s, v.loop.stamp_match_s);
+    } else if (v.false_loop) {
+      std::printf("false loop %.6f -> %.6f: off by %.3f m, %.2f deg (cameras %.3f m apart)\n",
+                  v.loop.stamp_query_s, v.loop.stamp_match_s, v.translation_error_m,
+                  v.rotation_error_deg, v.true_distance_m);
+    }
+  }
+  std::printf("%-24s %-7s %zu (%d checked, %d false; largest error %s m, %s deg)\n", "loops", "",
+              check.verdicts.size(), check.checked, check.false_loops,
+              Fixed(check.max_translation_error_m, 4).c_str(),
+              Fixed(check.max_rotation_error_deg, 3).c_str());
+  if (json == nullptr) return;
+  json->AddString("loops_file", path)
+      .AddInteger("loops", static_cast<long long>(check.verdicts.size()))
+      .AddInteger("loops_checked", check.checked)
+      .AddInteger("false_loops", check.false_loops)
+      .AddNumber("loop_max_translation_error_m", check.max_translation_error_m, 9)
+      .AddNumber("loop_max_rotation_error_deg", check.max_rotation_error_deg, 9);
+}
+
 // --save-aligned and --save-groundtruth: the pairs the metrics used, the estimate moved by the
 // ATE alignment.
 void SaveAssociatedPoses(const Arguments& args, const dslam::TrajectoryMetrics& m) {
@@ -205,10 +237,9 @@ int Run(const Arguments& args) {
   const dslam::TrajectoryMetrics metrics =
       dslam::EvaluateTrajectory(estimated, groundtruth, frame_stamps, options);
   PrintTable(metrics, correction_name);
-  if (args.values.count("json")) {
-    dslam::WriteJsonFile(args.values.at("json"),
-                         MetricsJson(metrics, args, correction_name, options));
-  }
+  dslam::JsonObject json = MetricsJson(metrics, args, correction_name, options);
+  if (args.values.count("loops")) CheckLoopFile(args.values.at("loops"), groundtruth, &json);
+  if (args.values.count("json")) dslam::WriteJsonFile(args.values.at("json"), json);
   SaveAssociatedPoses(args, metrics);
   return 0;
 }
