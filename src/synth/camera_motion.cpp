@@ -63,8 +63,9 @@ CameraMotionKind ParseCameraMotion(const std::string& name) {
   if (name == "xyz") return CameraMotionKind::kXyz;
   if (name == "rpy") return CameraMotionKind::kRpy;
   if (name == "halfsphere") return CameraMotionKind::kHalfsphere;
+  if (name == "tour") return CameraMotionKind::kTour;
   throw std::invalid_argument("unknown camera motion '" + name +
-                              "' (static, xyz, rpy, halfsphere)");
+                              "' (static, xyz, rpy, halfsphere, tour)");
 }
 
 std::string CameraMotionName(CameraMotionKind kind) {
@@ -77,6 +78,8 @@ std::string CameraMotionName(CameraMotionKind kind) {
       return "rpy";
     case CameraMotionKind::kHalfsphere:
       return "halfsphere";
+    case CameraMotionKind::kTour:
+      return "tour";
   }
   return "unknown";
 }
@@ -121,6 +124,8 @@ Eigen::Isometry3d CameraPoseAt(const CameraMotionParams& p, double t, uint32_t s
     }
     case CameraMotionKind::kHalfsphere:
       return Halfsphere(p, t);
+    case CameraMotionKind::kTour:
+      return TourPoseAt(p.tour, t, seed);
   }
   return base;
 }

@@ -89,6 +89,28 @@ Scenario Loop(const std::string& name, uint32_t seed) {
   return s;
 }
 
+/// Static room, the camera carried once round the room (`tour`, tour_motion.h: looking outwards and
+/// ahead) and on for 6 s into its first views again. Walker 1 stands at the front wall's left end
+/// until 1.5 s before the lap ends, then crosses the first views once; walker 2 walks the same
+/// stretch along the right wall back and forth, once per half lap, so it is in the same place
+/// whenever the camera passes: seen there in both laps, by views that are alike.
+Scenario RoomTour(const std::string& name, uint32_t seed) {
+  Scenario s = Base(name, seed, CameraMotionKind::kTour);
+  const double lap_s = TourLapTime(s.camera.tour);
+  s.frames = static_cast<int>(std::lround((lap_s + 6.0) * s.fps));
+  WalkerParams front = Walker({{-1.8, -2.4}, {2.7, -2.4}}, 0.0, seed * 2 + 1);
+  front.speed_mps = 1.1;
+  front.dwell_s = {lap_s - 1.5, 60.0};  // waits at the left end from t = 0, then walks once
+  const double crossing_s = 4.5 / front.speed_mps;
+  front.start_offset_m = (2.0 * crossing_s + front.dwell_s[1]) * front.speed_mps;
+  const double side_pause_s = 1.0;
+  WalkerParams side = Walker({{2.35, -2.0}, {2.35, 1.2}}, 0.0, seed * 2 + 2);
+  side.dwell_s = {side_pause_s, side_pause_s};
+  side.speed_mps = 2.0 * 3.2 / (0.5 * lap_s - 2.0 * side_pause_s);  // a back and forth per half lap
+  s.walkers = {front, side};
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> ScenarioNames() {
@@ -100,7 +122,9 @@ std::vector<std::pair<std::string, std::string>> ScenarioNames() {
           {"slow_box", "two boxes sliding 3 and 1.5 mm per frame, camera xyz"},
           {"nonrigid_sheet", "a hanging sheet deformed by travelling waves, camera xyz"},
           {"fast_rotation", "static room, handheld fast roll/pitch/yaw with 15 ms motion blur"},
-          {"loop", "three walkers, camera on a half sphere; everything repeats after 20 s"}};
+          {"loop", "three walkers, camera on a half sphere; everything repeats after 20 s"},
+          {"room_tour",
+           "camera carried once round the room and into its first views again, two walkers"}};
 }
 
 Scenario MakeScenario(const std::string& name, uint32_t seed) {
@@ -151,6 +175,7 @@ Scenario MakeScenario(const std::string& name, uint32_t seed) {
   }
   if (name == "fast_rotation") return FastRotation(name, seed);
   if (name == "loop") return Loop(name, seed);
+  if (name == "room_tour") return RoomTour(name, seed);
   throw std::invalid_argument("unknown scenario '" + name + "'");
 }
 

@@ -18,7 +18,7 @@ namespace {
 
 void PrintUsage() {
   std::cerr << "usage: dslam_synth --scenario NAME [--frames N] [--seed S] [--camera "
-               "static|xyz|rpy|halfsphere]\n"
+               "static|xyz|rpy|halfsphere|tour]\n"
                "                   [--output FOLDER [--bag OUT.bag]] [--preview OUT.png "
                "[--preview-frame K]]\n"
                "       dslam_synth --list\n";

@@ -96,7 +96,9 @@ TEST(SynthLoop, ThingsMoveWithinThePeriod) {
   }
   // Only `loop` claims a period.
   for (const auto& [name, description] : ScenarioNames()) {
-    if (name != "loop") EXPECT_EQ(MakeScenario(name, 1).period_s, 0.0) << name;
+    if (name != "loop") {
+      EXPECT_EQ(MakeScenario(name, 1).period_s, 0.0) << name;
+    }
   }
 }
 

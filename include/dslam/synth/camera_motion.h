@@ -7,13 +7,15 @@
 
 #include <Eigen/Geometry>
 
+#include "dslam/synth/tour_motion.h"
+
 namespace dslam {
 namespace synth {
 
-/// The four TUM-like camera motions.
-enum class CameraMotionKind { kStatic, kXyz, kRpy, kHalfsphere };
+/// The four TUM-like camera motions, and a walk round the room (tour_motion.h).
+enum class CameraMotionKind { kStatic, kXyz, kRpy, kHalfsphere, kTour };
 
-/// Parses "static", "xyz", "rpy" or "halfsphere"; throws std::invalid_argument otherwise.
+/// Parses "static", "xyz", "rpy", "halfsphere" or "tour"; throws std::invalid_argument otherwise.
 CameraMotionKind ParseCameraMotion(const std::string& name);
 
 /// The name ParseCameraMotion() accepts for `kind`.
@@ -51,6 +53,8 @@ struct CameraMotionParams {
   Eigen::Vector3d rpy_translation_m{0.0, 0.0, 0.0};
   /// [s] rpy: periods of the hand-shake translation (x, y, z).
   Eigen::Vector3d rpy_translation_period_s{2.9, 2.4, 3.4};
+  /// tour: the walk round the room (tour_motion.h); the base pose is not used.
+  TourParams tour;
   /// Colour exposure (motion blur, motion_blur.h); exposure_s = 0 (the default) = sharp.
   ExposureParams exposure;
 };
@@ -59,7 +63,7 @@ struct CameraMotionParams {
 Eigen::Matrix3d LookAtRotation(const Eigen::Vector3d& position, const Eigen::Vector3d& target);
 
 /// T_world_camera at time `t_s` [s] after the start of the sequence; `seed` sets the phases of the
-/// static jitter only.
+/// static jitter and of the tour's hand-held motion only.
 Eigen::Isometry3d CameraPoseAt(const CameraMotionParams& params, double t_s, uint32_t seed);
 
 }  // namespace synth
