@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dslam/io/trajectory_io.h"
+
 namespace dslam {
 namespace {
 
@@ -23,24 +25,16 @@ std::vector<LoopRecord> ParseLoopFile(std::istream& in, const std::string& name)
   std::vector<LoopRecord> loops;
   std::string line;
   int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
+  while (ReadDataLine(in, &line, &line_number)) {
     const std::string where = name + ":" + std::to_string(line_number) + ": ";
     std::istringstream fields(line);
     LoopRecord loop;
-    double x, y, z, qx, qy, qz, qw;
-    if (!(fields >> loop.stamp_query_s >> loop.stamp_match_s >> x >> y >> z >> qx >> qy >> qz >>
-          qw)) {
+    double f[7];
+    if (!(fields >> loop.stamp_query_s >> loop.stamp_match_s >> f[0] >> f[1] >> f[2] >> f[3] >>
+          f[4] >> f[5] >> f[6])) {
       throw std::runtime_error(where + "expected 'stamp_query stamp_match tx ty tz qx qy qz qw'");
     }
-    Eigen::Quaterniond q(qw, qx, qy, qz);
-    const double norm = q.coeffs().stableNorm();
-    if (!(norm > 1e-6)) throw std::runtime_error(where + "zero quaternion");
-    q.coeffs() /= norm;
-    loop.T_match_query.linear() = q.toRotationMatrix();
-    loop.T_match_query.translation() = Eigen::Vector3d(x, y, z);
+    loop.T_match_query = PoseFromTumFields(f, where);
     loops.push_back(loop);
   }
   return loops;

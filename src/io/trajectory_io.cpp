@@ -17,32 +17,41 @@ Trajectory ReadTumTrajectory(const std::string& path) {
   return ParseTumTrajectory(in, path);
 }
 
+bool ReadDataLine(std::istream& in, std::string* line, int* line_number) {
+  while (std::getline(in, *line)) {
+    ++*line_number;
+    const size_t first = line->find_first_not_of(" \t\r");
+    if (first != std::string::npos && (*line)[first] != '#') return true;
+  }
+  return false;
+}
+
+Eigen::Isometry3d PoseFromTumFields(const double fields[7], const std::string& where) {
+  Eigen::Quaterniond q(fields[6], fields[3], fields[4], fields[5]);
+  // stableNorm: norm() overflows to infinity for coefficients beyond ~1e154, and the
+  // quaternion then normalised to zero (read as the identity rotation).
+  const double norm = q.coeffs().stableNorm();
+  if (!(norm > 1e-6)) throw std::runtime_error(where + "zero quaternion");
+  q.coeffs() /= norm;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = q.toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(fields[0], fields[1], fields[2]);
+  return pose;
+}
+
 Trajectory ParseTumTrajectory(std::istream& in, const std::string& path) {
   Trajectory trajectory;
   std::string line;
   int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
+  while (ReadDataLine(in, &line, &line_number)) {
+    const std::string where = path + ":" + std::to_string(line_number) + ": ";
     std::istringstream fields(line);
-    double t, x, y, z, qx, qy, qz, qw;
-    if (!(fields >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) {
-      throw std::runtime_error(path + ":" + std::to_string(line_number) +
-                               ": expected 'timestamp tx ty tz qx qy qz qw'");
-    }
-    Eigen::Quaterniond q(qw, qx, qy, qz);
-    // stableNorm: norm() overflows to infinity for coefficients beyond ~1e154, and the
-    // quaternion then normalised to zero (read as the identity rotation).
-    const double norm = q.coeffs().stableNorm();
-    if (!(norm > 1e-6)) {
-      throw std::runtime_error(path + ":" + std::to_string(line_number) + ": zero quaternion");
-    }
     StampedPose pose;
-    pose.stamp_s = t;
-    q.coeffs() /= norm;
-    pose.T_world_camera.linear() = q.toRotationMatrix();
-    pose.T_world_camera.translation() = Eigen::Vector3d(x, y, z);
+    double f[7];
+    if (!(fields >> pose.stamp_s >> f[0] >> f[1] >> f[2] >> f[3] >> f[4] >> f[5] >> f[6])) {
+      throw std::runtime_error(where + "expected 'timestamp tx ty tz qx qy qz qw'");
+    }
+    pose.T_world_camera = PoseFromTumFields(f, where);
     trajectory.push_back(pose);
   }
   std::stable_sort(

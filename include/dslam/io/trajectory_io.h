@@ -26,4 +26,12 @@ extern const char kTumTrajectoryHeader[];
 /// Formats one pose as a TUM line without newline.
 std::string FormatTumLine(const StampedPose& pose);
 
+/// Reads up to the next line that is neither blank nor a '#' comment into `line`; false at the end
+/// of `in`. `line_number` counts every line read (1-based), for messages.
+bool ReadDataLine(std::istream& in, std::string* line, int* line_number);
+
+/// The pose of TUM fields `tx ty tz qx qy qz qw` [m]; the quaternion is normalised. Throws
+/// std::runtime_error(where + "zero quaternion") when its norm is below 1e-6 (or not finite).
+Eigen::Isometry3d PoseFromTumFields(const double fields[7], const std::string& where);
+
 }  // namespace dslam
