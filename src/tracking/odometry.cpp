@@ -1,4 +1,3 @@
-#include <cstdlib>
 #include "dslam/tracking/odometry.h"
 
 #include <stdexcept>
@@ -87,7 +86,6 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   const bool tracked = RefinePoseWithStaticPoints(&current, &result);
   result.times.refine_ms = stage.Restart();
   if (!tracked) return Untracked(&current, std::move(result), "too few static inliers");
-  if (std::getenv("DSLAM_REANCHOR")) ReanchorToArchive(&current, result.frame_index);
 
   // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
   UpdateMatchedPoints(current);

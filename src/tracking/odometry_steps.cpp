@@ -5,11 +5,6 @@
 #include "dslam/core/side_by_side.h"
 #include "dslam/tracking/id_set.h"
 #include "dslam/tracking/map_point_creation.h"
-#include "dslam/tracking/relocalisation.h"
-#include "dslam/tracking/pose_estimation.h"
-#include <cstdio>
-#include <cstdlib>
-#include <unordered_set>
 #include "dslam/tracking/odometry.h"
 
 namespace dslam {
@@ -347,81 +342,4 @@ void Odometry::AdoptNewestKeyFramePose() {
   previous_.T_camera_world = T_world_last.inverse();
 }
 
-}  // namespace dslam
-
-namespace dslam {
-// EXPERIMENT: after a weak episode (few pose inliers), match the frame against verified points made
-// before it and re-anchor what was made since when the two disagree.
-void Odometry::ReanchorToArchive(Current* current, int frame_index) {
-  static const int kWeak = std::getenv("DSLAM_WEAK") ? std::atoi(std::getenv("DSLAM_WEAK")) : 60;
-  static const int kStrong = std::getenv("DSLAM_STRONG") ? std::atoi(std::getenv("DSLAM_STRONG")) : 120;
-  const int inliers = current->pose.num_inliers;
-  if (inliers < kWeak) {
-    if (weak_start_frame_ < 0) weak_start_frame_ = frame_index;
-    return;
-  }
-  if (weak_start_frame_ < 0 || inliers < kStrong || frame_index - weak_start_frame_ < 5) return;
-  const int before = weak_start_frame_ - 3;
-  std::unordered_set<PointId> seen;
-  std::vector<PointId> points;
-  auto collect = [&](const KeyFrame& kf) {
-    if (kf.frame_index >= before) return;
-    for (PointId id : kf.points) {
-      const MapPoint* p = map_.Find(id);
-      if (p == nullptr || !p->IsVerifiedStatic() || p->created_frame >= before) continue;
-      if (seen.insert(id).second) points.push_back(id);
-    }
-  };
-  for (const auto& [id, kf] : map_.archived_keyframes()) collect(kf);
-  for (const KeyFrame& kf : map_.keyframes()) collect(kf);
-  if (points.size() < 50) { weak_start_frame_ = -1; return; }
-  const std::vector<PointMatch> matches =
-      MatchByDescriptor(map_, points, current->features, DescriptorMatchRules());
-  const PoseResult found = EstimateRobustPoseFromMatches(
-      map_, matches, current->features, *current->frame->camera, PointSelection::kVerified,
-      config_, static_cast<uint32_t>(frame_index) + 5u);
-  const bool ok = found.success && found.num_inliers >= 40 &&
-                  found.num_inliers >= 0.3 * matches.size();
-  if (std::getenv("DSLAM_REANCHOR_LOG")) {
-    std::fprintf(stderr, "reanchor check frame %d weak_start %d points %zu matches %zu inliers %d ok %d\n",
-                 frame_index, weak_start_frame_, points.size(), matches.size(), found.num_inliers, ok);
-  }
-  if (!ok) {
-    if (frame_index - weak_start_frame_ > 150) weak_start_frame_ = -1;
-    return;
-  }
-  // p_old = C p_current
-  const Eigen::Isometry3d C = found.T_camera_world.inverse() * current->T_camera_world;
-  const double dt = C.translation().norm();
-  const double da = Eigen::AngleAxisd(C.rotation()).angle() * 180.0 / M_PI;
-  if (std::getenv("DSLAM_REANCHOR_LOG")) std::fprintf(stderr, "  correction %.3f m %.2f deg\n", dt, da);
-  const int start = weak_start_frame_;
-  weak_start_frame_ = -1;
-  if (dt < 0.03 && da < 1.0) return;
-  const Eigen::Matrix3d R = C.rotation();
-  std::vector<int> archived;
-  for (const auto& [id, kf] : map_.archived_keyframes()) {
-    if (kf.frame_index >= start) archived.push_back(id);
-  }
-  for (int id : archived) {
-    KeyFrame* kf = map_.FindKeyFrame(id);
-    kf->T_world_camera = C * kf->T_world_camera;
-    kf->measurements.T_camera_world = kf->T_world_camera.inverse();
-  }
-  for (auto& kf : map_.mutable_keyframes()) {
-    if (kf.frame_index < start) continue;
-    kf.T_world_camera = C * kf.T_world_camera;
-    kf.measurements.T_camera_world = kf.T_world_camera.inverse();
-  }
-  map_.ForEachPoint([&](MapPoint* p) {
-    if (p->created_frame < start) return;
-    p->p_world = C * p->p_world;
-    p->cov_world = R * p->cov_world * R.transpose();
-  });
-  const Eigen::Isometry3d C_inv = C.inverse();
-  current->T_camera_world = current->T_camera_world * C_inv;
-  current->pose.T_camera_world = current->T_camera_world;
-  previous_.T_camera_world = previous_.T_camera_world * C_inv;
-  motion_.CorrectLastPose(C * motion_.last_pose());
-}
 }  // namespace dslam

@@ -160,10 +160,6 @@ class Map {
   /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
   PointId next_point_id() const { return next_point_id_; }
   size_t size() const { return points_.size(); }  ///< number of map points
-  template <typename F>
-  void ForEachPoint(F&& f) {  // EXPERIMENT
-    for (auto& [id, p] : points_) f(&p);
-  }
   void Clear();                                   ///< removes every point and keyframe
 
  private:

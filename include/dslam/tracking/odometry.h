@@ -132,8 +132,6 @@ class Odometry {
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);
   void DetermineFrontEndLabels(Current* current, FrameResult* result);
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
-  void ReanchorToArchive(Current* current, int frame_index);  // EXPERIMENT
-  int weak_start_frame_ = -1;                                 // EXPERIMENT
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(int static_matches) const;
   /// The last frame of this world ended with a pose tracking goes on from (tracked, recovered or
