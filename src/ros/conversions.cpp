@@ -121,7 +121,7 @@ Eigen::Isometry3d MapFromOdom(const Eigen::Isometry3d& T_map_odom_optical,
   if (T_map_odom_optical.matrix() == Eigen::Matrix4d::Identity()) {
     return Eigen::Isometry3d::Identity();
   }
-  return T_base_camera * T_map_odom_optical * T_base_camera.inverse();
+  return OdomFromBase(T_map_odom_optical, T_base_camera);  // the same change of frames
 }
 
 Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& information,
