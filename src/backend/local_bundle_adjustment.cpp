@@ -108,6 +108,21 @@ Window CollectWindow(const Map& map, int min_keyframes) {
   return window;
 }
 
+// Per window keyframe: whether the solve over the measurements flagged in `use` optimises its
+// pose: not among the oldest `fixed_keyframes`, and with at least kMinKeyFramePoints of them.
+std::vector<bool> FreeKeyFrames(const Window& window, const std::vector<bool>& use,
+                                int fixed_keyframes) {
+  std::vector<int> per_keyframe(window.poses.size(), 0);
+  for (size_t i = 0; i < window.measurements.size(); ++i) {
+    if (use[i]) ++per_keyframe[window.measurements[i].keyframe];
+  }
+  std::vector<bool> free(window.poses.size());
+  for (size_t k = 0; k < free.size(); ++k) {
+    free[k] = static_cast<int>(k) >= fixed_keyframes && per_keyframe[k] >= kMinKeyFramePoints;
+  }
+  return free;
+}
+
 // One Levenberg-Marquardt run over the measurements flagged in `use`. Returns the iterations.
 int SolveRound(const Config& full_config, const std::vector<bool>& use, Window* window) {
   const BackendConfig& config = full_config.backend;
@@ -125,16 +140,13 @@ int SolveRound(const Config& full_config, const std::vector<bool>& use, Window* 
                              pose.q_camera_world.coeffs().data(), pose.t_camera_world.data(),
                              window->points.at(m.point).data());
   }
-  std::vector<int> per_keyframe(window->poses.size(), 0);
-  for (size_t i = 0; i < window->measurements.size(); ++i) {
-    if (use[i]) ++per_keyframe[window->measurements[i].keyframe];
-  }
+  const std::vector<bool> free = FreeKeyFrames(*window, use, config.ba_fixed_keyframes);
   for (size_t k = 0; k < window->poses.size(); ++k) {
     double* q = window->poses[k].q_camera_world.coeffs().data();
     double* t = window->poses[k].t_camera_world.data();
     if (!problem.HasParameterBlock(q)) continue;
     problem.SetManifold(q, &quaternion_manifold);
-    if (static_cast<int>(k) < config.ba_fixed_keyframes || per_keyframe[k] < kMinKeyFramePoints) {
+    if (!free[k]) {
       problem.SetParameterBlockConstant(q);
       problem.SetParameterBlockConstant(t);
     }
@@ -179,29 +191,22 @@ std::vector<bool> WithinChi2(const Window& window, double chi2, const Map* map =
 
 // The sum of squared whitened residuals e^T C_ik^-1 e of the measurements flagged in `counted`
 // over their degrees of freedom: 3 per measurement, less 3 per point they measure and 6 per
-// keyframe free in the solve (not among the oldest `fixed_keyframes`, with at least
-// kMinKeyFramePoints of the `used` measurements). 0 when there are none.
+// keyframe free in the solve over the `used` measurements (FreeKeyFrames). 0 when there are none.
 double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& counted,
                               const std::vector<bool>& used, int fixed_keyframes) {
   double chi2 = 0.0;
   int measurements = 0;
-  std::vector<int> per_keyframe(window.poses.size(), 0);
   std::unordered_map<PointId, int> points;
   for (size_t i = 0; i < window.measurements.size(); ++i) {
-    const Measurement& m = window.measurements[i];
-    if (used[i]) ++per_keyframe[m.keyframe];
     if (!counted[i]) continue;
+    const Measurement& m = window.measurements[i];
     const Eigen::Vector3d e = Residual(window, m);
     chi2 += e.dot(m.value->covariance.inverse() * e);
     ++measurements;
     ++points[m.point];
   }
-  int free_keyframes = 0;
-  for (size_t k = 0; k < per_keyframe.size(); ++k) {
-    if (static_cast<int>(k) >= fixed_keyframes && per_keyframe[k] >= kMinKeyFramePoints) {
-      ++free_keyframes;
-    }
-  }
+  const std::vector<bool> free = FreeKeyFrames(window, used, fixed_keyframes);
+  const int free_keyframes = static_cast<int>(std::count(free.begin(), free.end(), true));
   const int dof = 3 * measurements - 3 * static_cast<int>(points.size()) - 6 * free_keyframes;
   return dof > 0 ? chi2 / dof : 0.0;
 }
