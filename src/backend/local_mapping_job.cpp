@@ -9,7 +9,10 @@
 namespace dslam {
 
 LocalMappingJob::LocalMappingJob(const Map& map, uint64_t generation)
-    : window_(map.WindowCopy()), generation_(generation), first_new_point_id_(map.next_point_id()) {
+    : window_(map.WindowCopy()),
+      generation_(generation),
+      first_new_point_id_(map.next_point_id()),
+      map_corrections_(map.corrections()) {
   if (!window_.keyframes().empty()) {
     newest_keyframe_id_ = window_.keyframes().back().id;
     T_world_newest_copied_ = window_.keyframes().back().T_world_camera;
@@ -31,6 +34,10 @@ void LocalMappingJob::Run(const Config& config) {
 }
 
 void LocalMappingJob::Apply(Map* map) const {
+  if (map->corrections() != map_corrections_) {  // the copy's world is not the map's any more
+    ApplyToPoints(map, /*move_points=*/false);
+    return;
+  }
   if (moved_keyframes()) {
     for (const KeyFrame& refined : window_.keyframes()) {
       KeyFrame* live = map->FindKeyFrame(refined.id);
@@ -40,15 +47,15 @@ void LocalMappingJob::Apply(Map* map) const {
     }
     MoveWhatWasMadeSince(map);
   }
-  ApplyToPoints(map);
+  ApplyToPoints(map, /*move_points=*/true);
 }
 
-void LocalMappingJob::ApplyToPoints(Map* map) const {
+void LocalMappingJob::ApplyToPoints(Map* map, bool move_points) const {
   for (const auto& [id, before] : before_) {
     const MapPoint* refined = window_.Find(id);
     MapPoint* live = map->Find(id);
     if (refined == nullptr || live == nullptr) continue;
-    if (refined->p_world != before.p_world) {
+    if (move_points && refined->p_world != before.p_world) {
       if (live->p_world == before.p_world) {
         live->p_world = refined->p_world;
       } else if (live->marked) {

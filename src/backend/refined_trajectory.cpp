@@ -14,6 +14,9 @@ void RefinedTrajectory::UpdateKeyFrames(const Map& map) {
   for (const KeyFrame& keyframe : map.keyframes()) {
     T_world_keyframe_[keyframe.id] = keyframe.T_world_camera;
   }
+  for (const auto& [id, keyframe] : map.archived_keyframes()) {
+    T_world_keyframe_[id] = keyframe.T_world_camera;
+  }
 }
 
 Trajectory RefinedTrajectory::Poses() const {

@@ -45,6 +45,9 @@ FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& reque
     QueueReset(ResetMode::kNewWorld);
   }
   if (!observers_.empty()) QueueKeyFrame(frame, request.points, &result);
+  if (result.reanchored && refined_recording_ == RefinedPoseRecording::kOn) {
+    refined_.UpdateKeyFrames(map());  // the keyframes made since the weak episode moved
+  }
   if (result.has_pose && refined_recording_ == RefinedPoseRecording::kOn) {
     refined_.AddFrame(result.stamp_s, result.T_world_camera, map());
   }

@@ -25,6 +25,11 @@ void Config::Validate() const {
         "tracking.wide_search_radius_px must not be smaller than "
         "tracking.search_radius_px");
   }
+  if (tracking.reanchor_strong_inliers < tracking.reanchor_weak_inliers) {
+    throw ConfigError(
+        "tracking.reanchor_strong_inliers must not be smaller than "
+        "tracking.reanchor_weak_inliers");
+  }
   if (features.fast_threshold_min > features.fast_threshold) {
     throw ConfigError("features.fast_threshold_min must not exceed features.fast_threshold");
   }

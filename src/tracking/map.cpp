@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "dslam/core/geometry.h"
 #include "dslam/tracking/id_set.h"
 #include "dslam/tracking/keyframe_window.h"
 
@@ -168,6 +169,43 @@ KeyFrame* Map::FindKeyFrame(int id) {
   }
   const auto it = archive_.find(id);
   return it == archive_.end() ? nullptr : &it->second;
+}
+
+Eigen::Isometry3d PartialCorrection(const MapCorrection& correction, double s) {
+  const Eigen::AngleAxisd rotation(correction.T_new_old.rotation());
+  const Eigen::Vector3d& c = correction.pivot_world;
+  const Eigen::Vector3d displacement = correction.T_new_old * c - c;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(s * rotation.angle(), rotation.axis()).matrix();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();  // p -> R (p - c) + c + s displacement
+  T.linear() = R;
+  T.translation() = c - R * c + s * displacement;
+  return T;
+}
+
+void Map::MoveMadeSince(const MapCorrection& correction) {
+  std::map<int, Eigen::Isometry3d> by_frame;  // frame index of a moved keyframe -> its correction
+  const auto move = [&](KeyFrame* keyframe) {
+    if (keyframe->frame_index < correction.first_frame) return;
+    const auto share = correction.share.find(keyframe->id);
+    const Eigen::Isometry3d T_new_old =
+        share == correction.share.end() ? correction.T_new_old
+                                        : PartialCorrection(correction, share->second);
+    keyframe->T_world_camera = T_new_old * keyframe->T_world_camera;
+    keyframe->measurements.T_camera_world = keyframe->T_world_camera.inverse();
+    by_frame[keyframe->frame_index] = T_new_old;
+  };
+  for (KeyFrame& keyframe : keyframes_) move(&keyframe);
+  for (auto& entry : archive_) move(&entry.second);
+  for (auto& entry : points_) {
+    MapPoint& point = entry.second;
+    if (point.created_frame < correction.first_frame) continue;
+    auto made = by_frame.upper_bound(point.created_frame);
+    const Eigen::Isometry3d& T_new_old =
+        made == by_frame.begin() ? correction.T_new_old : (--made)->second;
+    point.p_world = T_new_old * point.p_world;
+    point.cov_world = RotatedCovariance(T_new_old.linear(), point.cov_world);
+  }
+  ++corrections_;
 }
 
 void Map::Clear() {

@@ -30,6 +30,7 @@ void Odometry::Reset(ResetMode mode) {
   previous_ = FrameMeasurements();
   last_on_keyframe_ = PoseOnKeyFrame();
   last_tracked_.clear();
+  weak_episode_.End();
   initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
@@ -86,6 +87,8 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   const bool tracked = RefinePoseWithStaticPoints(&current, &result);
   result.times.refine_ms = stage.Restart();
   if (!tracked) return Untracked(&current, std::move(result), "too few static inliers");
+  //    After a weak episode (people covering the view): the pose checked against the older map.
+  ReanchorAfterWeakEpisode(&current, &result);
 
   // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
   UpdateMatchedPoints(current);

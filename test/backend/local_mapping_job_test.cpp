@@ -169,5 +169,34 @@ TEST(LocalMappingJob, WhatWasMadeDuringTheRunFollowsItsNewestKeyFrame) {
   EXPECT_TRUE(live.Find(point_id)->p_world.isApprox(correction * point.p_world, 1e-12));
 }
 
+// A re-anchoring (Map::MoveMadeSince) while the run worked: the run's poses and positions are in
+// the world before it, so Apply must leave the corrected ones alone; its unmarks still count.
+TEST(LocalMappingJob, ACorrectionOfTheMapDuringTheRunKeepsTheCorrectedPoses) {
+  const Config config = TestConfig();
+  Map live = MakeMap(7);
+  LocalMappingJob job(live, 0);
+  MapCorrection correction;
+  correction.first_frame = 0;  // every keyframe and point of MakeMap
+  correction.T_new_old =
+      Eigen::Translation3d(0.3, 0.0, -0.1) * Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY());
+  live.MoveMadeSince(correction);
+  const Map corrected = live;
+  job.Run(config);
+  ASSERT_TRUE(job.moved_keyframes());
+  job.Apply(&live);
+  for (const KeyFrame& keyframe : live.keyframes()) {
+    const KeyFrame& expected = corrected.keyframes()[keyframe.id];
+    EXPECT_TRUE(keyframe.T_world_camera.matrix() == expected.T_world_camera.matrix())
+        << keyframe.id;
+  }
+  int unmarked = 0;
+  for (PointId id = 0; id < kStatic + kMoving; ++id) {
+    EXPECT_TRUE(live.Find(id)->p_world == corrected.Find(id)->p_world) << id;
+    unmarked += !live.Find(id)->marked;
+  }
+  EXPECT_GT(job.status().spd.unmarked, 0);
+  EXPECT_EQ(unmarked, job.status().spd.unmarked);
+}
+
 }  // namespace
 }  // namespace dslam

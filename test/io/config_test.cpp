@@ -30,6 +30,20 @@ TEST(Config, ValidateNamesTheParameter) {
   }
 }
 
+TEST(Config, ValidateNamesBothParametersOfABrokenPair) {
+  Config config;
+  config.tracking.reanchor_weak_inliers = 100;
+  config.tracking.reanchor_strong_inliers = 80;
+  try {
+    config.Validate();
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("tracking.reanchor_strong_inliers"), std::string::npos) << what;
+    EXPECT_NE(what.find("tracking.reanchor_weak_inliers"), std::string::npos) << what;
+  }
+}
+
 TEST(Config, YamlOverridesDefaults) {
   Config config;
   LoadConfigYamlString("dataset: {association_max_dt_s: 0.05}", &config);

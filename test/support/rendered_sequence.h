@@ -1,5 +1,5 @@
 #pragma once
-// A synthetic scenario rendered in-process (seed 1) for whole-trajectory regression tests: the
+// A synthetic scenario rendered in-process (seed 1 unless a test asks for another) for whole-trajectory regression tests: the
 // frames, their dynamic masks and the ground-truth trajectory; SharedSequence renders one once for
 // all the tests of a binary, TrackAll feeds its frames to a tracker.
 
@@ -25,14 +25,15 @@ struct RenderedSequence {
 };
 
 /// The images of frames 0..frames-1 of `sequence`: rendered, or read from
-/// $DSLAM_TEST_SCENES/<name>_s1.bin when the environment names that folder (scripts/test.sh sets
+/// $DSLAM_TEST_SCENES/<name>_s<seed>.bin when the environment names that folder (scripts/test.sh sets
 /// a new one per run) and the file holds enough frames; a file with fewer is replaced by one with
 /// `frames` (written to a file of its own, then renamed: binaries running at the same time read
 /// whole files). The images are the same bit for bit either way.
 inline std::vector<CachedImages> SceneImages(const synth::SyntheticSequence& sequence,
-                                             const std::string& name, int frames) {
+                                             const std::string& name, int frames, int seed) {
   const char* folder = std::getenv("DSLAM_TEST_SCENES");
-  const std::string path = folder && *folder ? std::string(folder) + "/" + name + "_s1.bin" : "";
+  const std::string file = name + "_s" + std::to_string(seed) + ".bin";
+  const std::string path = folder && *folder ? std::string(folder) + "/" + file : "";
   std::vector<CachedImages> images;
   if (!path.empty()) images = ReadSceneCache(path, frames);
   if (static_cast<int>(images.size()) == frames) return images;
@@ -46,11 +47,11 @@ inline std::vector<CachedImages> SceneImages(const synth::SyntheticSequence& seq
   return images;
 }
 
-/// Renders the first `frames` frames of scenario `name` (synth::MakeScenario, seed 1); stamps,
+/// Renders the first `frames` frames of scenario `name` (synth::MakeScenario with `seed`); stamps,
 /// poses and the camera are the sequence's (SyntheticSequence::RenderFrame sets the same).
-inline RenderedSequence RenderSequence(const std::string& name, int frames) {
-  const synth::SyntheticSequence sequence(synth::MakeScenario(name, 1));
-  std::vector<CachedImages> images = SceneImages(sequence, name, frames);
+inline RenderedSequence RenderSequence(const std::string& name, int frames, int seed = 1) {
+  const synth::SyntheticSequence sequence(synth::MakeScenario(name, seed));
+  std::vector<CachedImages> images = SceneImages(sequence, name, frames, seed);
   RenderedSequence out;
   for (int i = 0; i < frames; ++i) {
     RgbdFrame frame;

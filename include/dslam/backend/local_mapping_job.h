@@ -37,7 +37,9 @@ class LocalMappingJob {
   ///   tracking's position where it moved an unmarked point (it follows its object);
   /// - points the run unmarked are unmarked in `map` (MapPoint::Unmark with
   ///   tracking.remark_frames), on top of what tracking counted meanwhile.
-  /// Positions and poses are left alone when local BA was rejected.
+  /// Positions and poses are left alone when local BA was rejected, and when `map` was
+  /// corrected (Map::MoveMadeSince) since the copy: the run's poses are in the world before the
+  /// correction; its unmarks still apply.
   void Apply(Map* map) const;
 
   /// [world_new <- world_old] How the run moved the copied window's newest keyframe,
@@ -57,7 +59,8 @@ class LocalMappingJob {
     bool marked;
   };
 
-  void ApplyToPoints(Map* map) const;
+  /// The run's unmarks and, with `move_points`, its point positions, written to `map`.
+  void ApplyToPoints(Map* map, bool move_points) const;
   /// Moves the keyframes made since the copy, and the points they made, by correction().
   void MoveWhatWasMadeSince(Map* map) const;
 
@@ -66,6 +69,7 @@ class LocalMappingJob {
   int newest_keyframe_id_ = -1;
   Eigen::Isometry3d T_world_newest_copied_ = Eigen::Isometry3d::Identity();
   PointId first_new_point_id_ = 0;     ///< points with ids from here on were made after the copy
+  uint64_t map_corrections_ = 0;       ///< Map::corrections() of the copied map
   int unmark_min_dynamic_frames_ = 0;  ///< tracking.remark_frames of the run
   std::unordered_map<PointId, PointBefore> before_;
   BackEndStatus status_;

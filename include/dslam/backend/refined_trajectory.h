@@ -22,8 +22,8 @@ class RefinedTrajectory {
   /// no keyframe.
   void AddFrame(double stamp_s, const Eigen::Isometry3d& T_world_camera, const Map& map);
 
-  /// Takes the current poses of the keyframes in `map` (call after the back end changed them).
-  /// Keyframes that left the window keep their last pose.
+  /// Takes the current poses of the keyframes in `map`, window and archive (call after the back
+  /// end or a re-anchoring changed them). Keyframes erased from the map keep their last pose.
   void UpdateKeyFrames(const Map& map);
 
   /// The recorded frames with their refined poses, in the order they were added.

@@ -38,6 +38,11 @@ struct TrackingConfig {
   double max_prediction_gap_s = 1.0;
   bool relocalisation = true;
   double relocalisation_min_inlier_share = 0.5;
+  bool reanchoring = true;
+  int reanchor_weak_inliers = 60;
+  int reanchor_strong_inliers = 120;
+  double reanchor_min_correction_m = 0.03;
+  double reanchor_min_correction_deg = 1.0;
 
   /// Visits every field in documentation order.
   template <typename Self, typename Visitor>
@@ -165,6 +170,28 @@ struct TrackingConfig {
     v(Field("relocalisation_min_inlier_share", "-", 0.0, 1.0,
             "a relocalised pose needs at least this share of the descriptor matches as inliers"),
       s.relocalisation_min_inlier_share);
+    ReanchorFields(s, v);
+  }
+
+  // After a weak episode (reanchoring.h): the pose checked against the map made before it.
+  template <typename Self, typename Visitor>
+  static void ReanchorFields(Self& s, Visitor& v) {
+    v(Flag("reanchoring",
+           "after a weak episode, check the pose against the verified points made before it and "
+           "move what was made since onto them when they disagree"),
+      s.reanchoring);
+    v(Field("reanchor_weak_inliers", "-", 1, 100000,
+            "a weak episode begins at a pose with fewer inliers than this"),
+      s.reanchor_weak_inliers);
+    v(Field("reanchor_strong_inliers", "-", 1, 100000,
+            "the episode is checked at a pose with at least this many inliers again"),
+      s.reanchor_strong_inliers);
+    v(Field("reanchor_min_correction_m", "m", 0.0, 100.0,
+            "smallest translation of a correction that is applied (with min_correction_deg)"),
+      s.reanchor_min_correction_m);
+    v(Field("reanchor_min_correction_deg", "deg", 0.0, 180.0,
+            "smallest rotation of a correction that is applied (either bound moves the map)"),
+      s.reanchor_min_correction_deg);
   }
 };
 

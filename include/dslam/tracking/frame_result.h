@@ -3,6 +3,7 @@
 // and per-stage times. Consumed by the offline runner (status CSV, segmentation score) and by
 // the ROS layer (odometry, clouds, markers, status message).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,10 @@ struct FrameResult {
   Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
   bool keyframe = false;  ///< a keyframe was made from this frame
   bool reset = false;     ///< the odometry reset before this frame (e.g. time went backwards)
+  /// This frame re-anchored the map made since a weak episode onto the older map
+  /// (reanchoring.h): the correction applied; std::nullopt otherwise. T_world_camera and
+  /// T_world_previous_camera are already in the corrected world.
+  std::optional<MapCorrection> reanchored;
   std::string message;    ///< why the frame was lost / reset, empty otherwise
   FrameCounts counts;
   StageTimes times;

@@ -94,6 +94,24 @@ struct KeyFrame {
   Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
 };
 
+/// A correction of the part of the map made from `first_frame` on (Map::MoveMadeSince). The
+/// newest pose takes all of T_new_old; each keyframe made since takes the share of it that
+/// `share` gives (PartialCorrection), so that an error that grew over several keyframes is taken
+/// back where it grew. Keyframes not in `share` take all of it.
+struct MapCorrection {
+  int first_frame = -1;  ///< frame index the moved keyframes and points were made from
+  /// [world_new <- world_old] the correction of the newest pose
+  Eigen::Isometry3d T_new_old = Eigen::Isometry3d::Identity();
+  /// [m] world point a partial correction's rotation turns about
+  Eigen::Vector3d pivot_world = Eigen::Vector3d::Zero();
+  std::map<int, double> share;  ///< [0, 1] by keyframe id: the share of the correction it takes
+};
+
+/// [world_new <- world_old] Share `s` [0, 1] of `correction`: the rotation of T_new_old by s times
+/// its angle about pivot_world, and s times the displacement T_new_old gives the pivot. s = 1 is
+/// T_new_old, s = 0 the identity.
+Eigen::Isometry3d PartialCorrection(const MapCorrection& correction, double s);
+
 /// How many keyframes the window and the map hold (TrackingConfig: window_keyframes,
 /// covisible_keyframes, max_keyframes).
 struct KeyFrameMapLimits {
@@ -157,6 +175,16 @@ class Map {
   /// The keyframe with `id` (window or archive), or nullptr when it was erased.
   KeyFrame* FindKeyFrame(int id);
 
+  /// Moves what was made from frame correction.first_frame on: each keyframe (window and
+  /// archive) with frame_index >= first_frame by its share of the correction, each point with
+  /// created_frame >= first_frame (position and covariance) with the newest of those keyframes
+  /// made at or before its creation (all of the correction when there is none); counts a
+  /// correction.
+  void MoveMadeSince(const MapCorrection& correction);
+  /// Corrections made by MoveMadeSince since construction (Clear keeps the count): a copy of the
+  /// window taken before a correction must not write its poses back after it.
+  uint64_t corrections() const { return corrections_; }
+
   /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
   PointId next_point_id() const { return next_point_id_; }
   size_t size() const { return points_.size(); }  ///< number of map points
@@ -178,6 +206,7 @@ class Map {
   size_t recent_in_window_ = 0;
   PointId next_point_id_ = 0;
   int next_keyframe_id_ = 0;
+  uint64_t corrections_ = 0;
 };
 
 }  // namespace dslam

@@ -13,6 +13,7 @@
 #include "dslam/tracking/map.h"
 #include "dslam/tracking/motion_model.h"
 #include "dslam/tracking/pose_estimation.h"
+#include "dslam/tracking/reanchoring.h"
 
 namespace dslam {
 
@@ -132,6 +133,10 @@ class Odometry {
   void RunFrontEndStaticPoints(Current* current, FrameResult* result);
   void DetermineFrontEndLabels(Current* current, FrameResult* result);
   bool RefinePoseWithStaticPoints(Current* current, FrameResult* result);
+  /// At the end of a weak episode, the pose checked against the map made before it; a large
+  /// enough disagreement moves what was made since, and this frame's and the last frame's poses,
+  /// onto the older map (reanchoring.h; FrameResult::reanchored).
+  void ReanchorAfterWeakEpisode(Current* current, FrameResult* result);
   void UpdateMatchedPoints(const Current& current);
   bool NeedKeyFrame(int static_matches) const;
   /// The last frame of this world ended with a pose tracking goes on from (tracked, recovered or
@@ -165,6 +170,7 @@ class Odometry {
   int lost_frames_ = 0;
   int last_keyframe_frame_ = 0;
   int last_keyframe_static_ = 0;
+  WeakEpisode weak_episode_;  ///< reanchoring.h
 
   /// The last tracked frame's pose on the keyframe newest at the time (AdoptNewestKeyFramePose).
   struct PoseOnKeyFrame {
