@@ -15,8 +15,9 @@ namespace {
 // The committed vocabulary as docs/tools-and-data.md states it ("Place recognition").
 constexpr int kCommittedBranching = 10;
 constexpr int kCommittedLevels = 5;
-constexpr std::size_t kCommittedWords = 0;
-constexpr std::uint64_t kCommittedIdentity = 0x0ull;
+constexpr std::size_t kCommittedNodes = 109431;
+constexpr std::size_t kCommittedWords = 98366;
+constexpr std::uint64_t kCommittedIdentity = 0x723a8e39b1688a18ull;
 
 std::string FileBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -109,6 +110,7 @@ TEST(CommittedVocabularyTest, HasTheDocumentedParametersAndIdentity) {
   EXPECT_EQ(vocabulary.branching(), kCommittedBranching);
   EXPECT_EQ(vocabulary.levels(), kCommittedLevels);
   EXPECT_EQ(vocabulary.num_words(), kCommittedWords);
+  EXPECT_EQ(vocabulary.num_nodes(), kCommittedNodes);
   EXPECT_EQ(FormatIdentity(vocabulary.identity()), FormatIdentity(kCommittedIdentity));
 }
 
