@@ -1,5 +1,6 @@
 #include "dslam/place_recognition/vocabulary.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
