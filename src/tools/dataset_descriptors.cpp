@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "dslam/features/features.h"
+#include "eval_tool.h"
 
 namespace dslam {
 namespace tools {
@@ -16,7 +17,7 @@ FrameRange ParseFrameRange(const std::string& text) {
   char colon2 = 0;
   if (!(in >> range.first >> colon1 >> range.last >> colon2 >> range.step) || colon1 != ':' ||
       colon2 != ':' || !in.eof() || range.first < 0 || range.step < 1) {
-    throw std::invalid_argument("frame range '" + text + "': expected FIRST:LAST:STEP");
+    throw UsageError("frame range '" + text + "': expected FIRST:LAST:STEP");
   }
   return range;
 }

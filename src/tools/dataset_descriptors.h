@@ -21,7 +21,7 @@ struct FrameRange {
   int step = 1;
 };
 
-/// Parses "FIRST:LAST:STEP" (LAST -1 for the end); throws std::invalid_argument otherwise.
+/// Parses "FIRST:LAST:STEP" (LAST -1 for the end); throws UsageError (eval_tool.h) otherwise.
 FrameRange ParseFrameRange(const std::string& text);
 
 /// The indices of `range` below `size` (associated pairs of a dataset).

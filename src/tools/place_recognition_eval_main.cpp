@@ -4,13 +4,10 @@
 // [m] and --max-angle [deg] of the query's. Prints per query the top 3, the best true and the best
 // false score, then the top-1 and top-3 hits over the queries that have a true frame in the
 // database. docs/tools-and-data.md ("Place recognition") has the measurements.
-// Usage: dslam_place_recognition_eval --dataset FOLDER [--vocabulary FILE] [--database 0:400:10]
-//        [--queries 560:727:10] [--max-distance 0.3] [--max-angle 20]
+// Usage: kUsage below.
 
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,10 +19,22 @@
 #include "dslam/io/trajectory_io.h"
 #include "dslam/place_recognition/place_database.h"
 #include "dslam/place_recognition/vocabulary.h"
+#include "eval_tool.h"
 
 namespace {
 
 using Pose = std::optional<Eigen::Isometry3d>;
+
+constexpr char kUsage[] =
+    "usage: dslam_place_recognition_eval --dataset FOLDER [--vocabulary FILE]\n"
+    "                                    [--database 0:400:10] [--queries 560:727:10]\n"
+    "                                    [--max-distance 0.3] [--max-angle 20]\n"
+    "  --dataset       TUM-layout folder with groundtruth.txt\n"
+    "  --vocabulary    vocabulary file (default: the committed one, DefaultVocabularyPath())\n"
+    "  --database      frames FIRST:LAST:STEP put into the database (LAST -1: the last frame)\n"
+    "  --queries       frames FIRST:LAST:STEP that ask it\n"
+    "  --max-distance  [m] a candidate within this of the query is true (default 0.3)\n"
+    "  --max-angle     [deg] and within this rotation (default 20)\n";
 
 struct Args {
   std::string dataset;
@@ -36,34 +45,18 @@ struct Args {
   double max_angle_deg = 20.0;
 };
 
-int Usage() {
-  std::cerr << "usage: dslam_place_recognition_eval --dataset FOLDER [--vocabulary FILE] "
-               "[--database 0:400:10]\n"
-               "                                    [--queries 560:727:10] [--max-distance 0.3] "
-               "[--max-angle 20]\n";
-  return 2;
-}
-
-bool Parse(int argc, char** argv, Args* args) {
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i];
-    const std::string value = argv[i + 1];
-    if (key == "--dataset")
-      args->dataset = value;
-    else if (key == "--vocabulary")
-      args->vocabulary = value;
-    else if (key == "--database")
-      args->database = dslam::tools::ParseFrameRange(value);
-    else if (key == "--queries")
-      args->queries = dslam::tools::ParseFrameRange(value);
-    else if (key == "--max-distance")
-      args->max_distance_m = std::stod(value);
-    else if (key == "--max-angle")
-      args->max_angle_deg = std::stod(value);
-    else
-      return false;
-  }
-  return argc % 2 == 1 && !args->dataset.empty();
+Args ReadArgs(const dslam::tools::Options& options) {
+  using dslam::tools::NumberKind;
+  using dslam::tools::NumberOption;
+  Args args;
+  args.dataset = options.at("dataset");
+  if (options.count("vocabulary")) args.vocabulary = options.at("vocabulary");
+  if (options.count("database"))
+    args.database = dslam::tools::ParseFrameRange(options.at("database"));
+  if (options.count("queries")) args.queries = dslam::tools::ParseFrameRange(options.at("queries"));
+  args.max_distance_m = NumberOption(options, "max-distance", 0.3, NumberKind::kNonNegative);
+  args.max_angle_deg = NumberOption(options, "max-angle", 20.0, NumberKind::kNonNegative);
+  return args;
 }
 
 // The ground-truth camera pose of every associated frame (nearest stamp within the association
@@ -191,12 +184,8 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args args;
-  try {
-    if (!Parse(argc, argv, &args)) return Usage();
-    return Run(args);
-  } catch (const std::exception& e) {
-    std::cerr << "dslam_place_recognition_eval: " << e.what() << "\n";
-    return 1;
-  }
+  return dslam::tools::RunTool(
+      "dslam_place_recognition_eval", kUsage, argc, argv,
+      {"dataset", "vocabulary", "database", "queries", "max-distance", "max-angle"}, {"dataset"},
+      [](const dslam::tools::Options& options) { return Run(ReadArgs(options)); });
 }

@@ -3,12 +3,10 @@
 // features (as the tracker sees them; --features sets features.num_features), every --stride-th
 // frame of each folder, and writes the vocabulary file. Deterministic: the same folders and
 // options give a byte-identical file (feature extraction does not depend on the thread count).
-// Usage: dslam_train_vocabulary --out FILE [--branching 10] [--levels 5] [--iterations 10]
-//        [--seed 1] [--stride 1] [--features 1000] [--threads 1] FOLDER...
+// Usage: kUsage below.
 
 #include <cstdio>
-#include <exception>
-#include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,8 +15,20 @@
 #include "dataset_descriptors.h"
 #include "dslam/core/stopwatch.h"
 #include "dslam/place_recognition/vocabulary.h"
+#include "eval_tool.h"
 
 namespace {
+
+constexpr char kUsage[] =
+    "usage: dslam_train_vocabulary --datasets FOLDER[,FOLDER...] --out FILE [--branching 10]\n"
+    "                              [--levels 5] [--iterations 10] [--seed 1] [--stride 1]\n"
+    "                              [--features 1000] [--threads 1]\n"
+    "  --datasets    TUM-layout folders (rgb.txt, depth.txt, camera.yaml), comma-separated\n"
+    "  --out         the vocabulary file to write\n"
+    "  --branching   k: children per node; --levels L: depth of the tree\n"
+    "  --iterations  k-majority rounds per node; --seed: the random generators' seed\n"
+    "  --stride      every stride-th frame of each folder; --features ORB features per frame\n"
+    "  --threads     OpenCV threads of the feature extraction (the file does not depend on it)\n";
 
 struct Args {
   std::string out;
@@ -26,46 +36,28 @@ struct Args {
   dslam::VocabularyParams params;
   int stride = 1;
   int features = 1000;
-  int threads = 1;
 };
 
-int Usage() {
-  std::cerr << "usage: dslam_train_vocabulary --out FILE [--branching 10] [--levels 5] "
-               "[--iterations 10] [--seed 1]\n"
-               "                              [--stride 1] [--features 1000] [--threads 1] "
-               "FOLDER...\n";
-  return 2;
+// A whole-number option (> 0) or its default.
+int Whole(const dslam::tools::Options& options, const std::string& name, int fallback) {
+  return static_cast<int>(dslam::tools::NumberOption(options, name, fallback,
+                                                     dslam::tools::NumberKind::kPositiveWhole));
 }
 
-bool Parse(int argc, char** argv, Args* args) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string key = argv[i];
-    if (key.rfind("--", 0) != 0) {
-      args->folders.push_back(key);
-      continue;
-    }
-    if (i + 1 >= argc) return false;
-    const std::string value = argv[++i];
-    if (key == "--out")
-      args->out = value;
-    else if (key == "--branching")
-      args->params.branching = std::stoi(value);
-    else if (key == "--levels")
-      args->params.levels = std::stoi(value);
-    else if (key == "--iterations")
-      args->params.max_iterations = std::stoi(value);
-    else if (key == "--seed")
-      args->params.seed = static_cast<std::uint32_t>(std::stoul(value));
-    else if (key == "--stride")
-      args->stride = std::stoi(value);
-    else if (key == "--features")
-      args->features = std::stoi(value);
-    else if (key == "--threads")
-      args->threads = std::stoi(value);
-    else
-      return false;
+Args ReadArgs(const dslam::tools::Options& options) {
+  Args args;
+  std::stringstream folders(options.at("datasets"));
+  for (std::string folder; std::getline(folders, folder, ',');) {
+    if (!folder.empty()) args.folders.push_back(folder);
   }
-  return !args->out.empty() && !args->folders.empty() && args->stride >= 1 && args->threads >= 1;
+  args.out = options.at("out");
+  args.params = {Whole(options, "branching", 10), Whole(options, "levels", 5),
+                 Whole(options, "iterations", 10),
+                 static_cast<std::uint32_t>(Whole(options, "seed", 1))};
+  args.stride = Whole(options, "stride", 1);
+  args.features = Whole(options, "features", 1000);
+  cv::setNumThreads(Whole(options, "threads", 1));
+  return args;
 }
 
 // Every stride-th frame's descriptors of every folder, in the order given.
@@ -86,7 +78,6 @@ std::vector<cv::Mat> ReadDescriptors(const Args& args, const dslam::Config& conf
 }
 
 int Run(const Args& args) {
-  cv::setNumThreads(args.threads);
   dslam::Config config;
   config.features.num_features = args.features;
   const dslam::Stopwatch total;
@@ -110,12 +101,10 @@ int Run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Args args;
-  try {
-    if (!Parse(argc, argv, &args)) return Usage();
-    return Run(args);
-  } catch (const std::exception& e) {
-    std::cerr << "dslam_train_vocabulary: " << e.what() << "\n";
-    return 1;
-  }
+  return dslam::tools::RunTool("dslam_train_vocabulary", kUsage, argc, argv,
+                               {"datasets", "out", "branching", "levels", "iterations", "seed",
+                                "stride", "features", "threads"},
+                               {"datasets", "out"}, [](const dslam::tools::Options& options) {
+                                 return Run(ReadArgs(options));
+                               });
 }
