@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "loop_closing/ring_graph.h"
+#include "support/thrown_message.h"
 
 namespace dslam {
 namespace {
@@ -19,12 +20,7 @@ constexpr double kDegree = M_PI / 180.0;
 // The message of the std::invalid_argument that `optimise` throws ("" when none).
 template <typename F>
 std::string InvalidArgumentMessage(F optimise) {
-  try {
-    optimise();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return test::ThrownMessage<std::invalid_argument>(optimise);
 }
 
 TEST(PoseGraph, LoopEdgeRemovesAccumulatedDrift) {
