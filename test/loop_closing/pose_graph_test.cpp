@@ -154,6 +154,12 @@ TEST(PoseGraph, RobustLossContainsAWrongLoopEdgeAndItsResidualExposesIt) {
     const auto worst = std::max_element(norms.begin(), norms.end());
     EXPECT_EQ(worst - norms.begin(), static_cast<long>(graph.edges.size()) - 1);
   }
+  // A scale of 1 (below the correct loop edge's residual at the chained poses) rejects the
+  // correct loop edge too: its residual stays large and the drift stays.
+  options.loop_loss_scale = 1.0;
+  const PoseGraphResult too_robust = OptimisePoseGraph(graph, options);
+  EXPECT_GT(too_robust.edge_residual_norms[graph.edges.size() - 2], 10.0);
+  EXPECT_GT(test::MaxError(too_robust.T_world_camera, ring).rotation_rad, 3.0 * kDegree);
 }
 
 TEST(PoseGraph, SameResultOnEveryRun) {
