@@ -98,8 +98,9 @@ Eigen::Matrix<double, 6, 1> PoseGraphResidual(const PoseGraphEdge& edge,
 /// Minimises the sum of squared PoseGraphResidual over the edges (loop edges through
 /// `options.loop_loss`), each node's pose a quaternion on Ceres' Eigen quaternion manifold and a
 /// translation, the fixed nodes held. Nodes without edges keep their pose. Throws
-/// std::invalid_argument (the message names the id) when no node is fixed, when an edge names a
-/// node missing from the graph or joins a node to itself, or when an option is out of range.
+/// std::invalid_argument when no node is fixed, when an edge names a node missing from the graph
+/// or joins a node to itself (the message names the id), when an edge's information is not
+/// positive definite (it names the edge's ids) or when an option is out of range.
 PoseGraphResult OptimisePoseGraph(const PoseGraph& graph, const PoseGraphOptions& options = {});
 
 }  // namespace dslam
