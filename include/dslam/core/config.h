@@ -9,6 +9,7 @@
 #include "dslam/core/backend_config.h"
 #include "dslam/core/config_field.h"
 #include "dslam/core/features_config.h"
+#include "dslam/core/loop_closing_config.h"
 #include "dslam/core/map_config.h"
 #include "dslam/core/objects_config.h"
 #include "dslam/core/static_points_config.h"
@@ -38,6 +39,7 @@ struct Config {
   StaticPointsConfig static_points;  ///< static point determination (static_points_config.h)
   TrackingConfig tracking;           ///< local map, keyframes, recovery (tracking_config.h)
   BackendConfig backend;             ///< local mapping after keyframes (backend_config.h)
+  LoopClosingConfig loop_closing;    ///< loops over the keyframe map (loop_closing_config.h)
   DynamicMaskConfig dynamic_mask;    ///< per-pixel masks of moving things (objects_config.h)
   ObjectsConfig objects;             ///< moving objects tracked across frames (objects_config.h)
   MapConfig map;                     ///< the static map (map_config.h)
@@ -52,6 +54,7 @@ struct Config {
     f("static_points", s.static_points);
     f("tracking", s.tracking);
     f("backend", s.backend);
+    f("loop_closing", s.loop_closing);
     f("dynamic_mask", s.dynamic_mask);
     f("objects", s.objects);
     f("map", s.map);
