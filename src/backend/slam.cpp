@@ -257,4 +257,22 @@ Map Slam::MapSnapshot() const {
   return map();
 }
 
+void Slam::ReadMap(const std::function<void(const Map&)>& read) const {
+  const Lock lock(map_mutex_);
+  read(map());
+}
+
+bool Slam::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected) {
+  const Lock lock(map_mutex_);
+  Map* live = odometry_.mutable_map();
+  if (T_world_camera_corrected.empty() ||
+      live->FindKeyFrame(T_world_camera_corrected.rbegin()->first) == nullptr) {
+    return false;
+  }
+  live->CorrectKeyFrames(T_world_camera_corrected);
+  odometry_.AdoptNewestKeyFramePose();
+  if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
+  return true;
+}
+
 }  // namespace dslam

@@ -14,7 +14,9 @@ int Usage() {
                "[--max-frames N] [--quiet]\n"
                "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
                "                         [--objects OUT.txt] [--map OUT.pcd] "
-               "[--map-unmasked OUT.pcd]\n";
+               "[--map-unmasked OUT.pcd]\n"
+               "                         [--loop-closing on|off] [--loops OUT.txt] "
+               "[--vocabulary FILE]\n";
   return 2;
 }
 
@@ -61,6 +63,12 @@ bool Parse(int argc, char** argv, RunDatasetArgs* args) {
       args->static_points = value;
     else if (key == "--backend" && (value == "on" || value == "off"))
       args->backend = value;
+    else if (key == "--loop-closing" && (value == "on" || value == "off"))
+      args->loop_closing = value;
+    else if (key == "--loops")
+      args->loops = value;
+    else if (key == "--vocabulary")
+      args->vocabulary = value;
     else
       return false;
   }

@@ -24,6 +24,10 @@ struct RunDatasetArgs {
   std::string map_unmasked;
   std::string static_points;  ///< --static-points: "on", "off" or empty (the config's value)
   std::string backend;        ///< --backend: "on", "off" or empty (the config's value)
+  /// --loop-closing: "on", "off" or empty (the config's value); on needs the back end.
+  std::string loop_closing;
+  std::string loops;       ///< --loops: accepted loops, one per line (io/loop_io.h)
+  std::string vocabulary;  ///< --vocabulary: vocabulary file; empty: the committed one
   int max_frames = -1;        ///< --max-frames: process only the first N frames; -1: all
   bool quiet = false;         ///< --quiet: no progress bar
   bool threads = false;       ///< --threads: the back end on its own thread (kThreaded)

@@ -28,6 +28,7 @@
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "loop_output.h"
 #include "map_output.h"
 #include "objects_output.h"
 #include "run_dataset_args.h"
@@ -237,16 +238,25 @@ int Run(const Args& args) {
   if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
   if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
   if (!args.backend.empty()) config.backend.enabled = args.backend == "on";
+  if (!args.loop_closing.empty()) config.loop_closing.enabled = args.loop_closing == "on";
+  if (args.loop_closing == "on" && !config.backend.enabled) {
+    std::fprintf(stderr, "dslam_run_dataset: loop closing needs the back end: off\n");
+  }
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
   dslam::tools::MapOutput maps(args.map, args.map_unmasked, config);
+  dslam::tools::LoopOutput loops(config, args.vocabulary);
+  std::vector<std::shared_ptr<dslam::KeyFrameObserver>> observers = maps.Observers();
+  for (auto& observer : loops.Observers()) observers.push_back(observer);
   dslam::Slam slam(config,
                    args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous,
-                   dslam::RefinedPoseRecording::kOn, maps.Observers());
+                   dslam::RefinedPoseRecording::kOn, observers);
+  loops.Attach(&slam);
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
   if (out.objects) out.objects->Close();
   maps.Write();
+  loops.Write(args.loops);
   dslam::WriteTumTrajectory(args.trajectory, out.trajectory);
   if (!args.refined_trajectory.empty()) {
     dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
@@ -258,9 +268,11 @@ int Run(const Args& args) {
                 args.objects.c_str());
   }
   maps.Print();
+  loops.Print();
   if (!args.summary.empty()) {
     dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
     maps.AddTo(&json);
+    loops.AddTo(&json);
     if (out.objects) {  // --objects: their work per frame, and the tracking thread's share of it
       json.AddNumber("median_objects_ms", dslam::Median(out.objects->times_ms()), 6)
           .AddNumber("p95_objects_ms", dslam::Quantile(out.objects->times_ms(), 0.95), 6)

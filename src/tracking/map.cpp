@@ -208,6 +208,39 @@ void Map::MoveMadeSince(const MapCorrection& correction) {
   ++corrections_;
 }
 
+void Map::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected) {
+  if (T_world_camera_corrected.empty()) return;
+  const int newest_corrected = T_world_camera_corrected.rbegin()->first;
+  Eigen::Isometry3d T_new_old_newest = Eigen::Isometry3d::Identity();
+  if (const KeyFrame* newest = FindKeyFrame(newest_corrected)) {
+    T_new_old_newest = T_world_camera_corrected.rbegin()->second * newest->T_world_camera.inverse();
+  }
+  std::map<int, Eigen::Isometry3d> by_frame;  // frame index of a moved keyframe -> its correction
+  const auto move = [&](KeyFrame* keyframe) {
+    const auto corrected = T_world_camera_corrected.find(keyframe->id);
+    Eigen::Isometry3d T_new_old = T_new_old_newest;
+    if (corrected != T_world_camera_corrected.end()) {
+      T_new_old = corrected->second * keyframe->T_world_camera.inverse();
+    } else if (keyframe->id < newest_corrected) {
+      return;  // not in the correction
+    }
+    keyframe->T_world_camera = T_new_old * keyframe->T_world_camera;
+    keyframe->measurements.T_camera_world = keyframe->T_world_camera.inverse();
+    by_frame[keyframe->frame_index] = T_new_old;
+  };
+  for (KeyFrame& keyframe : keyframes_) move(&keyframe);
+  for (auto& entry : archive_) move(&entry.second);
+  for (auto& entry : points_) {
+    MapPoint& point = entry.second;
+    auto made = by_frame.upper_bound(point.created_frame);
+    if (made == by_frame.begin()) continue;  // made before every moved keyframe
+    const Eigen::Isometry3d& T_new_old = (--made)->second;
+    point.p_world = T_new_old * point.p_world;
+    point.cov_world = RotatedCovariance(T_new_old.linear(), point.cov_world);
+  }
+  ++corrections_;
+}
+
 void Map::Clear() {
   points_.clear();
   keyframes_.clear();

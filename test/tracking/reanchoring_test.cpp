@@ -173,5 +173,34 @@ TEST(Map, MoveMadeSinceMovesEachKeyFrameAndItsPointsByItsShare) {
   EXPECT_TRUE(map.Find(3)->p_world == before.Find(3)->p_world);  // frame 10: before the episode
 }
 
+// A loop correction: keyframes 0-2 get new poses, keyframe 3 (made while the correction was
+// computed, not in it) moves with keyframe 2, every point with the keyframe that made it.
+TEST(Map, CorrectKeyFramesMovesKeyFramesToTheirPosesAndPointsWithThem) {
+  Map map = MapOfFourKeyFrames();
+  Map before = map;
+  std::map<int, Eigen::Isometry3d> corrected;
+  for (int id = 0; id < 3; ++id) {
+    const Eigen::Isometry3d T(Eigen::AngleAxisd(0.05 * id, Eigen::Vector3d::UnitY()));
+    corrected[id] = Eigen::Translation3d(0.0, 0.02 * id, 0.0) * T *
+                    before.FindKeyFrame(id)->T_world_camera;
+  }
+  map.CorrectKeyFrames(corrected);
+  EXPECT_EQ(map.corrections(), 1u);
+  for (int id = 0; id < 3; ++id) {
+    EXPECT_TRUE(map.FindKeyFrame(id)->T_world_camera.isApprox(corrected[id], 1e-12)) << id;
+  }
+  const Eigen::Isometry3d T_new_old_2 =
+      corrected[2] * before.FindKeyFrame(2)->T_world_camera.inverse();
+  EXPECT_TRUE(map.FindKeyFrame(3)->T_world_camera.isApprox(
+      T_new_old_2 * before.FindKeyFrame(3)->T_world_camera, 1e-12));
+  for (PointId id = 0; id < 8; ++id) {
+    const int keyframe = static_cast<int>(id / 2);  // made with keyframe id / 2
+    const Eigen::Isometry3d T_new_old =
+        keyframe < 3 ? corrected[keyframe] * before.FindKeyFrame(keyframe)->T_world_camera.inverse()
+                     : T_new_old_2;
+    EXPECT_TRUE(map.Find(id)->p_world.isApprox(T_new_old * before.Find(id)->p_world, 1e-12)) << id;
+  }
+}
+
 }  // namespace
 }  // namespace dslam

@@ -23,7 +23,7 @@
 //   is the back-end thread's alone. A Reset while a job runs increments the generation; the job's
 //   results are then dropped.
 // - Every other public member (Reset, WaitForBackEnd, TakeUnreportedRuns, HoldBackEnd,
-//   RefinedPoses, MapSnapshot) takes it; getters return copies, never references into the map.
+//   RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames) takes it; getters return copies, never references into the map.
 //   config() is immutable.
 // - Keyframe observers (keyframe_observer.h, given to the constructor; the static map): under the
 //   lock the tracking thread queues each new keyframe (a shallow copy of its images and its point
@@ -37,6 +37,8 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -130,6 +132,17 @@ class Slam {
 
   /// A copy of the map (keyframe window and points) between two runs of either thread.
   Map MapSnapshot() const;
+
+  /// Calls `read(map)` under the map lock, for consumers above the back end that need part of
+  /// the map without copying all of it (loop detection). Tracking waits meanwhile: keep it short.
+  void ReadMap(const std::function<void(const Map&)>& read) const;
+
+  /// Moves keyframes to corrected poses [m] (a loop correction; Map::CorrectKeyFrames) under the
+  /// map lock: the last tracked pose follows its keyframe (the next frame reports it as
+  /// T_world_previous_camera), the refined trajectory takes the new poses, and a local-mapping
+  /// run copied before it does not write its poses back. False, and nothing changed, when the
+  /// newest corrected keyframe is not in the map any more (a reset came between).
+  bool CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected);
 
   const Config& config() const { return odometry_.config(); }  ///< immutable
   BackEndMode mode() const { return mode_; }                   ///< as constructed

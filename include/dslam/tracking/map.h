@@ -181,7 +181,13 @@ class Map {
   /// made at or before its creation (all of the correction when there is none); counts a
   /// correction.
   void MoveMadeSince(const MapCorrection& correction);
-  /// Corrections made by MoveMadeSince since construction (Clear keeps the count): a copy of the
+  /// Moves keyframes to corrected poses (a loop correction): each keyframe with an entry in
+  /// `T_world_camera_corrected` (by id) to that pose; keyframes without one and newer (by id)
+  /// than every keyframe with one move with the newest of those (made while the correction was
+  /// computed); each point with the newest moved keyframe made at or before its creation frame
+  /// (position and covariance). Counts a correction.
+  void CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected);
+  /// Corrections made by MoveMadeSince and CorrectKeyFrames since construction (Clear keeps the count): a copy of the
   /// window taken before a correction must not write its poses back after it.
   uint64_t corrections() const { return corrections_; }
 

@@ -1,0 +1,83 @@
+#pragma once
+// Loop closing over Slam's keyframe map (issue 33): a KeyFrameObserver that, for each new keyframe,
+// looks for a place seen before (LoopDetector: words of verified static points, consistency over
+// consecutive keyframes, 3D-3D verification on static points only), and for a verified loop
+// optimises the keyframe map's pose graph (loop_correction.h) and moves the keyframes and their
+// points (Slam::CorrectKeyFrames), which carries the correction to the current pose.
+//
+// Threads: Slam calls OnKeyFrames without holding its map lock (keyframe_observer.h): on its
+// back-end thread in threaded mode, on the caller's in synchronous mode. Detection and the graph's
+// construction run under the map lock (Slam::ReadMap; tracking waits that long), the solve
+// without it, the correction under it again. This class's own mutex guards only the list of
+// loops and the times, and is never held while calling Slam.
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "dslam/backend/keyframe_observer.h"
+#include "dslam/backend/slam.h"
+#include "dslam/core/config.h"
+#include "dslam/loop_closing/loop_detector.h"
+#include "dslam/place_recognition/vocabulary.h"
+
+namespace dslam {
+
+/// After an accepted loop, this many keyframes are not searched for loops (ORB-SLAM2 waits 10):
+/// the tracker needs them to take up the corrected map.
+constexpr int kKeyFramesAfterLoop = 10;
+
+/// Keyframes between two removals of erased keyframes from the place database.
+constexpr int kPruneKeyFrames = 50;
+
+/// A loop that was verified and corrected.
+struct ClosedLoop {
+  LoopDetection detection;       ///< as verified (before the correction)
+  double query_moved_m = 0.0;    ///< [m] how far the correction moved the query keyframe
+  double query_turned_deg = 0.0; ///< [deg] and turned it
+};
+
+/// Loop closing as at the top of this file.
+class LoopClosing : public KeyFrameObserver {
+ public:
+  /// `vocabulary` (shared, read-only) gives the keyframes' words; thresholds from
+  /// config.loop_closing.
+  LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary);
+
+  /// The Slam whose map is searched and corrected; call before its first frame. `slam` must
+  /// outlive this object's use by it.
+  void Attach(Slam* slam) { slam_ = slam; }
+
+  void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
+                   const std::vector<KeyFramePose>& window) override;
+  void OnReset(ResetMode mode) override;
+
+  /// The loops closed so far, oldest first (a copy; any thread).
+  std::vector<ClosedLoop> loops() const;
+  /// [ms] time spent per keyframe (detection, and correction when a loop was closed).
+  std::vector<double> times_ms() const;
+
+ private:
+  /// Detection for keyframe `id` and, for a loop, its correction; true when one was closed.
+  bool ProcessKeyFrame(int id);
+  /// Erases from the database the keyframes `map` no longer has.
+  void PruneErased(const Map& map);
+
+  Slam* slam_ = nullptr;
+  LoopClosingConfig config_;
+  PoseConfig pose_config_;
+  std::shared_ptr<const Vocabulary> vocabulary_;
+  /// Made at the first keyframe, with its camera (the image quadrants of the verification).
+  std::unique_ptr<LoopDetector> detector_;
+  int keyframes_since_loop_ = kKeyFramesAfterLoop;
+  /// Keyframe ids in the detector's database; those the map erased leave it every
+  /// kPruneKeyFrames keyframes, so that it stays as bounded as the map (tracking.max_keyframes).
+  std::vector<int> in_database_;
+  mutable std::mutex mutex_;  ///< guards loops_ and times_ms_
+  std::vector<ClosedLoop> loops_;
+  std::vector<double> times_ms_;
+};
+
+}  // namespace dslam

@@ -1,0 +1,89 @@
+#include "dslam/loop_closing/loop_closing.h"
+
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "dslam/core/stopwatch.h"
+#include "dslam/loop_closing/loop_correction.h"
+
+namespace dslam {
+
+LoopClosing::LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary)
+    : config_(config.loop_closing), pose_config_(config.pose), vocabulary_(std::move(vocabulary)) {}
+
+void LoopClosing::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
+                              const std::vector<KeyFramePose>& /*window*/) {
+  for (const KeyFrameRecord& record : added) {
+    const Stopwatch stopwatch;
+    if (!detector_ && record.frame.camera) {
+      detector_ = std::make_unique<LoopDetector>(vocabulary_, config_, *record.frame.camera,
+                                                 pose_config_);
+    }
+    ProcessKeyFrame(record.id);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    times_ms_.push_back(stopwatch.ElapsedMs());
+  }
+}
+
+bool LoopClosing::ProcessKeyFrame(int id) {
+  if (slam_ == nullptr || !detector_) return false;
+  std::optional<LoopDetection> loop;
+  PoseGraph graph;
+  Eigen::Isometry3d T_world_query_before = Eigen::Isometry3d::Identity();
+  const bool searching = keyframes_since_loop_ >= kKeyFramesAfterLoop;
+  ++keyframes_since_loop_;
+  slam_->ReadMap([&](const Map& map) {
+    if (map.FindKeyFrame(id) == nullptr) return;  // erased already (threaded: made and culled)
+    loop = detector_->Process(map, id);            // every keyframe enters the database
+    in_database_.push_back(id);
+    if (in_database_.size() % kPruneKeyFrames == 0) PruneErased(map);
+    if (!loop || !searching) return;
+    graph = BuildLoopPoseGraph(map, loop->match_keyframe_id, loop->query_keyframe_id,
+                               loop->T_match_query);
+    T_world_query_before = graph.nodes.at(loop->query_keyframe_id).T_world_camera;
+  });
+  if (!loop || !searching) return false;
+  const std::map<int, Eigen::Isometry3d> corrected = CorrectedKeyFramePoses(graph);
+  if (corrected.empty() || !slam_->CorrectKeyFrames(corrected)) return false;
+  keyframes_since_loop_ = 0;
+  const Eigen::Isometry3d moved =
+      corrected.at(loop->query_keyframe_id) * T_world_query_before.inverse();
+  ClosedLoop closed;
+  closed.detection = *loop;
+  closed.query_moved_m = moved.translation().norm();
+  closed.query_turned_deg = Eigen::AngleAxisd(moved.rotation()).angle() * 180.0 / M_PI;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  loops_.push_back(closed);
+  return true;
+}
+
+void LoopClosing::PruneErased(const Map& map) {
+  std::vector<int> kept;
+  for (int id : in_database_) {
+    if (map.FindKeyFrame(id) != nullptr) {
+      kept.push_back(id);
+    } else {
+      detector_->Erase(id);
+    }
+  }
+  in_database_ = std::move(kept);
+}
+
+void LoopClosing::OnReset(ResetMode /*mode*/) {
+  in_database_.clear();
+  if (detector_) detector_->Clear();
+  keyframes_since_loop_ = kKeyFramesAfterLoop;
+}
+
+std::vector<ClosedLoop> LoopClosing::loops() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return loops_;
+}
+
+std::vector<double> LoopClosing::times_ms() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return times_ms_;
+}
+
+}  // namespace dslam
