@@ -68,6 +68,8 @@ class LoopDetectorTest : public testing::Test {
     }
   }
 
+  std::vector<LoopDetection> WalkerLoops(int walker_points, bool marked, LoopDetectorStats* stats);
+
   test::PlaceSet room_;
   std::shared_ptr<Vocabulary> vocabulary_;
   test::Session first_lap_, second_lap_;
@@ -115,6 +117,21 @@ TEST_F(LoopDetectorTest, SameInputsSameLoop) {
   EXPECT_EQ(a.stats().accepted, 1);
 }
 
+TEST_F(LoopDetectorTest, CovisibleKeyFramesAreNeverCandidates) {
+  // (d) A camera standing still for 400 frames: its keyframes share points, however far apart.
+  LoopDetector detector(vocabulary_, config_, scene_.camera);
+  const Eigen::Isometry3d T_world_camera = test::CirclePose(0.0, 0.5);
+  for (int frame : {0, 200, 400}) {
+    detector.Process(scene_.map,
+                     scene_.AddKeyFrame(frame, T_world_camera, {{&room_, &first_lap_}}));
+    EXPECT_TRUE(detector.last_candidates().empty()) << "frame " << frame;
+  }
+  // The same place made again (new map points): the older keyframes are candidates now.
+  detector.Process(scene_.map, scene_.AddKeyFrame(600, T_world_camera, {{&room_, &second_lap_}}));
+  ASSERT_EQ(detector.last_candidates().size(), 3u);
+  EXPECT_GT(detector.last_candidates()[0].score, 0.5);
+}
+
 TEST_F(LoopDetectorTest, ErasedKeyFramesAreNotFound) {
   LoopDetector detector(vocabulary_, config_, scene_.camera);
   EXPECT_TRUE(Tour(&detector, 0, kPerLap).empty());
@@ -133,6 +150,65 @@ TEST_F(LoopDetectorTest, ClearEmptiesTheDatabase) {
   EXPECT_EQ(detector.size(), 0u);
   EXPECT_EQ(detector.stats().processed, 0);
   EXPECT_TRUE(Tour(&detector, kPerLap, kPerLap + 6).empty());
+}
+
+// People walking the same path: a cluster of points in front of the camera with the same
+// descriptors in keyframes 2-4 and again, made anew, in keyframes 20-22 (180 frames later, a
+// different part of the wall). Every candidate passes the score (min_score_ratio 0), so the
+// verification decides. Returns the loops reported over keyframes 0-24.
+std::vector<LoopDetection> LoopDetectorTest::WalkerLoops(int walker_points, bool marked,
+                                                         LoopDetectorStats* stats) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Vector3d> p_camera;  // the walker's points in the camera frame
+  for (int i = 0; i < walker_points; ++i) {
+    const double depth_m = 1.5 + 0.3 * u(rng);
+    p_camera.emplace_back(0.45 * depth_m * u(rng), 0.35 * depth_m * u(rng), depth_m);
+  }
+  const cv::Mat descriptors = test::RandomDescriptors(walker_points, &rng);
+  test::Session early, late;
+  LoopClosingConfig config = config_;
+  config.min_score_ratio = 0.0;
+  LoopDetector detector(vocabulary_, config, scene_.camera);
+  std::vector<LoopDetection> loops;
+  for (int k = 0; k < 25; ++k) {
+    test::PlaceSet walker;
+    walker.marked = marked;
+    walker.descriptors = descriptors;
+    const Eigen::Isometry3d T_world_camera = test::CirclePose(2.0 * M_PI * k / kPerLap, 0.5);
+    for (const Eigen::Vector3d& p : p_camera) walker.p_world_true.push_back(T_world_camera * p);
+    test::Session* session = (k >= 2 && k <= 4) ? &early : (k >= 20 && k <= 22) ? &late : nullptr;
+    const int id = AddTourKeyFrame(k, walker, session);
+    if (auto loop = detector.Process(scene_.map, id)) loops.push_back(*loop);
+  }
+  *stats = detector.stats();
+  return loops;
+}
+
+TEST_F(LoopDetectorTest, WalkersNeverMakeALoop) {
+  LoopDetectorStats stats;
+  EXPECT_TRUE(WalkerLoops(60, false, &stats).empty());  // unmarked: no words, no votes
+  EXPECT_GT(stats.verifications, 0);
+}
+
+TEST_F(LoopDetectorTest, FewMarkedWalkerPointsAreNoLoop) {
+  LoopDetectorStats stats;
+  EXPECT_TRUE(WalkerLoops(config_.min_inliers - 15, true, &stats).empty());
+  EXPECT_GT(stats.verifications, 0);
+}
+
+TEST_F(LoopDetectorTest, ManyMarkedWalkerPointsWouldMakeALoop) {
+  // The same scene with 60 marked walker points: the marks are what keeps the walkers out.
+  LoopDetectorStats stats;
+  EXPECT_FALSE(WalkerLoops(60, true, &stats).empty());
+}
+
+TEST_F(LoopDetectorTest, CommittedVocabularyLoadsAndProcesses) {
+  const auto vocabulary = std::make_shared<Vocabulary>(Vocabulary::Load(DefaultVocabularyPath()));
+  LoopDetector detector(vocabulary, config_, scene_.camera);
+  EXPECT_NO_THROW(Tour(&detector, 0, kPerLap + 3));
+  EXPECT_EQ(detector.size(), static_cast<size_t>(kPerLap + 3));
+  EXPECT_EQ(detector.stats().processed, kPerLap + 3);
 }
 
 TEST_F(LoopDetectorTest, UnknownKeyFrameThrows) {
