@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -66,7 +67,7 @@ struct LoopScene {
   std::mt19937 rng{7};
   double sigma_xy_m = 0.002, sigma_z_m = 0.005;  ///< measurement noise, optical frame
 
-  /// Adds a keyframe at true pose `T_world_camera_true` listing the places of each
+  /// Adds a keyframe at true pose `T_true` (camera -> world) listing the places of each
   /// (set, session) pair it sees; returns its id. Its map pose is the session's drift times the
   /// truth (the first pair's session).
   int AddKeyFrame(int frame_index, const Eigen::Isometry3d& T_true,
