@@ -164,7 +164,11 @@ Map Map::WindowCopy() const {
 }
 
 KeyFrame* Map::FindKeyFrame(int id) {
-  for (KeyFrame& keyframe : keyframes_) {
+  return const_cast<KeyFrame*>(static_cast<const Map&>(*this).FindKeyFrame(id));
+}
+
+const KeyFrame* Map::FindKeyFrame(int id) const {
+  for (const KeyFrame& keyframe : keyframes_) {
     if (keyframe.id == id) return &keyframe;
   }
   const auto it = archive_.find(id);
@@ -187,9 +191,9 @@ void Map::MoveMadeSince(const MapCorrection& correction) {
   const auto move = [&](KeyFrame* keyframe) {
     if (keyframe->frame_index < correction.first_frame) return;
     const auto share = correction.share.find(keyframe->id);
-    const Eigen::Isometry3d T_new_old =
-        share == correction.share.end() ? correction.T_new_old
-                                        : PartialCorrection(correction, share->second);
+    const Eigen::Isometry3d T_new_old = share == correction.share.end()
+                                            ? correction.T_new_old
+                                            : PartialCorrection(correction, share->second);
     keyframe->T_world_camera = T_new_old * keyframe->T_world_camera;
     keyframe->measurements.T_camera_world = keyframe->T_world_camera.inverse();
     by_frame[keyframe->frame_index] = T_new_old;

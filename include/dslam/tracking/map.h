@@ -174,6 +174,7 @@ class Map {
 
   /// The keyframe with `id` (window or archive), or nullptr when it was erased.
   KeyFrame* FindKeyFrame(int id);
+  const KeyFrame* FindKeyFrame(int id) const;
 
   /// Moves what was made from frame correction.first_frame on: each keyframe (window and
   /// archive) with frame_index >= first_frame by its share of the correction, each point with

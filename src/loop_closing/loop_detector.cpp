@@ -1,0 +1,160 @@
+#include "dslam/loop_closing/loop_detector.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "dslam/loop_closing/covisibility.h"
+#include "dslam/loop_closing/loop_verification.h"
+
+namespace dslam {
+
+LoopDetector::LoopDetector(std::shared_ptr<const Vocabulary> vocabulary,
+                           const LoopClosingConfig& config, const PinholeCamera& camera,
+                           const PoseConfig& pose_config)
+    : vocabulary_(std::move(vocabulary)),
+      config_(config),
+      camera_(camera),
+      pose_config_(pose_config) {
+  if (vocabulary_ == nullptr || vocabulary_->empty()) {
+    throw std::invalid_argument("LoopDetector: the vocabulary is null or empty");
+  }
+}
+
+std::optional<LoopDetection> LoopDetector::Process(const Map& map, int keyframe_id) {
+  const KeyFrame* query = map.FindKeyFrame(keyframe_id);
+  if (query == nullptr) {
+    throw std::invalid_argument("LoopDetector::Process: no keyframe " +
+                                std::to_string(keyframe_id) + " in the map");
+  }
+  ++stats_.processed;
+  const BowVector words = Words(map, *query);
+  const CovisibilityIndex index(map);
+  const std::vector<int> covisible = index.CovisibleIds(*query);
+  last_candidates_ = Candidates(map, *query, words, covisible);
+  stats_.candidates += static_cast<int>(last_candidates_.size());
+  database_.Add(keyframe_id, words);
+  entries_[keyframe_id] = {query->frame_index, words};
+
+  std::vector<CandidateGroup> groups;
+  for (const PlaceCandidate& candidate : last_candidates_) {
+    groups.push_back(Group(map, index, candidate.id));
+  }
+  const std::vector<int> consistent = chains_.Update(groups, config_.consistent_keyframes);
+  stats_.consistent += static_cast<int>(consistent.size());
+  for (const PlaceCandidate& candidate : last_candidates_) {  // best score first
+    if (std::find(consistent.begin(), consistent.end(), candidate.id) == consistent.end()) {
+      continue;
+    }
+    std::optional<LoopDetection> loop = Verify(map, index, *query, candidate);
+    if (loop) {
+      chains_.Clear();
+      return loop;
+    }
+  }
+  return std::nullopt;
+}
+
+void LoopDetector::Erase(int keyframe_id) {
+  database_.Erase(keyframe_id);
+  entries_.erase(keyframe_id);
+}
+
+void LoopDetector::Clear() {
+  database_.Clear();
+  entries_.clear();
+  chains_.Clear();
+  last_candidates_.clear();
+  stats_ = LoopDetectorStats();
+}
+
+BowVector LoopDetector::Words(const Map& map, const KeyFrame& keyframe) const {
+  const cv::Mat descriptors = PointDescriptors(map, StaticMeasuredPoints(map, keyframe));
+  if (descriptors.empty()) return BowVector();
+  return vocabulary_->Transform(descriptors);
+}
+
+double LoopDetector::MinScore(const KeyFrame& query, const BowVector& words,
+                              const std::vector<int>& covisible) const {
+  double best = -1.0;
+  for (int id : covisible) {
+    const auto entry = entries_.find(id);
+    if (entry != entries_.end()) best = std::max(best, ScoreL1(words, entry->second.words));
+  }
+  if (best < 0.0) {  // no covisible keyframe in the database: the previously processed one
+    const auto previous = entries_.lower_bound(query.id);
+    if (previous == entries_.begin()) return 0.0;
+    best = ScoreL1(words, std::prev(previous)->second.words);
+  }
+  return config_.min_score_ratio * best;
+}
+
+std::vector<PlaceCandidate> LoopDetector::Candidates(const Map& map, const KeyFrame& query,
+                                                     const BowVector& words,
+                                                     const std::vector<int>& covisible) const {
+  if (words.empty()) return {};
+  const int newest_frame = query.frame_index - config_.min_frames_apart;
+  PlaceQueryOptions options;
+  options.max_results = kMaxLoopCandidates;
+  options.min_score = MinScore(query, words, covisible);
+  options.exclude = [&](int id) {
+    const auto entry = entries_.find(id);
+    return id == query.id || entry == entries_.end() || entry->second.frame_index > newest_frame ||
+           std::binary_search(covisible.begin(), covisible.end(), id) ||
+           map.FindKeyFrame(id) == nullptr;
+  };
+  return database_.Query(words, options);
+}
+
+CandidateGroup LoopDetector::Group(const Map& map, const CovisibilityIndex& index,
+                                   int candidate) const {
+  CandidateGroup group;
+  group.candidate = candidate;
+  group.keyframes = index.CovisibleIds(*map.FindKeyFrame(candidate));
+  const int frame = entries_.at(candidate).frame_index;
+  for (const auto& [id, entry] : entries_) {
+    if (std::abs(entry.frame_index - frame) <= kLoopGroupFrames) group.keyframes.push_back(id);
+  }
+  std::sort(group.keyframes.begin(), group.keyframes.end());
+  group.keyframes.erase(std::unique(group.keyframes.begin(), group.keyframes.end()),
+                        group.keyframes.end());
+  return group;
+}
+
+std::optional<LoopDetection> LoopDetector::Verify(const Map& map, const CovisibilityIndex& index,
+                                                  const KeyFrame& query,
+                                                  const PlaceCandidate& candidate) {
+  const KeyFrame& match = *map.FindKeyFrame(candidate.id);
+  std::vector<int> match_side = {match.id};
+  for (const auto& [id, shared] : index.Covisible(match)) {
+    if (static_cast<int>(match_side.size()) > kLoopVerificationNeighbours) break;
+    match_side.push_back(id);
+  }
+  const std::uint32_t seed =
+      static_cast<std::uint32_t>(query.id) * 65599u + static_cast<std::uint32_t>(match.id);
+  ++stats_.verifications;
+  const LoopVerification verification =
+      VerifyLoop(map, query, match_side, camera_, config_, pose_config_, seed);
+  if (!verification.accepted) return std::nullopt;
+  ++stats_.accepted;
+  LoopDetection loop;
+  loop.query_keyframe_id = query.id;
+  loop.match_keyframe_id = match.id;
+  loop.query_frame_index = query.frame_index;
+  loop.match_frame_index = match.frame_index;
+  loop.query_stamp_s = query.stamp_s;
+  loop.match_stamp_s = match.stamp_s;
+  loop.T_world_query_verified = verification.T_world_query;
+  loop.T_match_query = match.T_world_camera.inverse() * verification.T_world_query;
+  loop.inliers = verification.inliers;
+  loop.matches = verification.matches;
+  loop.quadrants = verification.quadrants;
+  loop.score = candidate.score;
+  return loop;
+}
+
+}  // namespace dslam
