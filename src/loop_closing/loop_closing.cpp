@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "dslam/core/stopwatch.h"
-#include "dslam/loop_closing/loop_correction.h"
 
 namespace dslam {
 
@@ -39,14 +38,16 @@ bool LoopClosing::ProcessKeyFrame(int id) {
     in_database_.push_back(id);
     if (in_database_.size() % kPruneKeyFrames == 0) PruneErased(map);
     if (!loop || !searching) return;
-    graph = BuildLoopPoseGraph(map, loop->match_keyframe_id, loop->query_keyframe_id,
-                               loop->T_match_query);
+    std::vector<LoopEdge> edges = loop_edges_;
+    edges.push_back({loop->match_keyframe_id, loop->query_keyframe_id, loop->T_match_query});
+    graph = BuildLoopPoseGraph(map, edges);
     T_world_query_before = graph.nodes.at(loop->query_keyframe_id).T_world_camera;
   });
   if (!loop || !searching) return false;
   const std::map<int, Eigen::Isometry3d> corrected = CorrectedKeyFramePoses(graph);
   if (corrected.empty() || !slam_->CorrectKeyFrames(corrected)) return false;
   keyframes_since_loop_ = 0;
+  loop_edges_.push_back({loop->match_keyframe_id, loop->query_keyframe_id, loop->T_match_query});
   const Eigen::Isometry3d moved =
       corrected.at(loop->query_keyframe_id) * T_world_query_before.inverse();
   ClosedLoop closed;
@@ -72,6 +73,7 @@ void LoopClosing::PruneErased(const Map& map) {
 
 void LoopClosing::OnReset(ResetMode /*mode*/) {
   in_database_.clear();
+  loop_edges_.clear();
   if (detector_) detector_->Clear();
   keyframes_since_loop_ = kKeyFramesAfterLoop;
 }

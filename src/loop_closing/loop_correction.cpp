@@ -4,9 +4,10 @@
 #include <set>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
+
+#include "dslam/loop_closing/covisibility.h"
 
 namespace dslam {
 namespace {
@@ -20,60 +21,75 @@ std::vector<const KeyFrame*> AllKeyFrames(const Map& map) {
   return out;
 }
 
-// Pairs (older id, newer id) of keyframes with the number of map points both list.
-std::map<std::pair<int, int>, int> SharedPoints(const std::vector<const KeyFrame*>& keyframes) {
-  std::unordered_map<PointId, std::vector<int>> observers;
+// Per keyframe (in the order given): the factor on its spanning edge's sigmas,
+// kWeakEdgeSigmaScale when the motion from the previous keyframe rests on a weak episode
+// (KeyFrame::weak_since_previous), else 1.
+std::vector<double> SpanningSigmaScales(const std::vector<const KeyFrame*>& keyframes) {
+  std::vector<double> scale;
   for (const KeyFrame* keyframe : keyframes) {
-    for (PointId id : keyframe->points) observers[id].push_back(keyframe->id);
+    scale.push_back(keyframe->weak_since_previous ? kWeakEdgeSigmaScale : 1.0);
   }
-  std::map<std::pair<int, int>, int> shared;
-  for (const auto& entry : observers) {
-    const std::vector<int>& ids = entry.second;
-    for (size_t a = 0; a < ids.size(); ++a) {
-      for (size_t b = a + 1; b < ids.size(); ++b) {
-        ++shared[std::minmax(ids[a], ids[b])];
+  return scale;
+}
+
+// The spanning tree (each keyframe to the one made before it, sigmas scaled by
+// SpanningSigmaScales) and covisibility edges, measured from the current poses.
+void AddOdometryEdges(const Map& map, const std::vector<const KeyFrame*>& keyframes,
+                      PoseGraph* graph) {
+  std::set<std::pair<int, int>> spanning;
+  const std::vector<double> scale = SpanningSigmaScales(keyframes);
+  for (size_t k = 1; k < keyframes.size(); ++k) {
+    spanning.emplace(keyframes[k - 1]->id, keyframes[k]->id);
+    graph->edges.push_back(MakePoseGraphEdge(
+        *graph, keyframes[k - 1]->id, keyframes[k]->id, PoseGraphEdgeKind::kSpanningTree,
+        PoseGraphEdgeInformation(scale[k] * kOdometryEdgeSigmaM,
+                                 scale[k] * kOdometryEdgeSigmaRad)));
+  }
+  const PoseGraphInformation covisible =
+      PoseGraphEdgeInformation(kOdometryEdgeSigmaM, kOdometryEdgeSigmaRad);
+  const CovisibilityIndex index(map);
+  for (const KeyFrame* keyframe : keyframes) {
+    for (const auto& [other, shared] : index.Covisible(*keyframe)) {
+      const std::pair<int, int> pair(keyframe->id, other);  // each pair once: older id first
+      if (other < keyframe->id || shared < kCovisibilityEdgePoints || spanning.count(pair) > 0) {
+        continue;
       }
+      graph->edges.push_back(MakePoseGraphEdge(*graph, pair.first, pair.second,
+                                               PoseGraphEdgeKind::kCovisibility, covisible));
     }
   }
-  return shared;
 }
 
 }  // namespace
 
-PoseGraph BuildLoopPoseGraph(const Map& map, int match_keyframe_id, int query_keyframe_id,
-                             const Eigen::Isometry3d& T_match_query) {
+PoseGraph BuildLoopPoseGraph(const Map& map, const std::vector<LoopEdge>& loops) {
   const std::vector<const KeyFrame*> keyframes = AllKeyFrames(map);
   PoseGraph graph;
   for (const KeyFrame* keyframe : keyframes) {
     graph.nodes[keyframe->id] = PoseGraphNode{keyframe->T_world_camera, false};
   }
-  for (int id : {match_keyframe_id, query_keyframe_id}) {
+  if (loops.empty()) throw std::invalid_argument("BuildLoopPoseGraph: no loop");
+  for (int id : {loops.back().match_keyframe_id, loops.back().query_keyframe_id}) {
     if (graph.nodes.count(id) == 0) {
       throw std::invalid_argument("BuildLoopPoseGraph: keyframe " + std::to_string(id) +
                                   " is not in the map");
     }
   }
   graph.nodes.begin()->second.fixed = true;  // the oldest keyframe
-  const PoseGraphInformation odometry =
-      PoseGraphEdgeInformation(kOdometryEdgeSigmaM, kOdometryEdgeSigmaRad);
-  std::set<std::pair<int, int>> spanning;
-  for (size_t k = 1; k < keyframes.size(); ++k) {
-    spanning.emplace(keyframes[k - 1]->id, keyframes[k]->id);
-    graph.edges.push_back(MakePoseGraphEdge(graph, keyframes[k - 1]->id, keyframes[k]->id,
-                                            PoseGraphEdgeKind::kSpanningTree, odometry));
+  AddOdometryEdges(map, keyframes, &graph);
+  for (const LoopEdge& loop : loops) {
+    if (graph.nodes.count(loop.match_keyframe_id) == 0 ||
+        graph.nodes.count(loop.query_keyframe_id) == 0) {
+      continue;  // a keyframe of an older loop was erased
+    }
+    PoseGraphEdge edge;
+    edge.id_a = loop.match_keyframe_id;
+    edge.id_b = loop.query_keyframe_id;
+    edge.T_a_b = loop.T_match_query;
+    edge.information = PoseGraphEdgeInformation(kLoopEdgeSigmaM, kLoopEdgeSigmaRad);
+    edge.kind = PoseGraphEdgeKind::kLoop;
+    graph.edges.push_back(edge);
   }
-  for (const auto& [pair, count] : SharedPoints(keyframes)) {
-    if (count < kCovisibilityEdgePoints || spanning.count(pair) > 0) continue;
-    graph.edges.push_back(MakePoseGraphEdge(graph, pair.first, pair.second,
-                                            PoseGraphEdgeKind::kCovisibility, odometry));
-  }
-  PoseGraphEdge loop;
-  loop.id_a = match_keyframe_id;
-  loop.id_b = query_keyframe_id;
-  loop.T_a_b = T_match_query;
-  loop.information = PoseGraphEdgeInformation(kLoopEdgeSigmaM, kLoopEdgeSigmaRad);
-  loop.kind = PoseGraphEdgeKind::kLoop;
-  graph.edges.push_back(loop);
   return graph;
 }
 

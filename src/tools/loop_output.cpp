@@ -43,8 +43,15 @@ void LoopOutput::Write(const std::string& path) const {
 void LoopOutput::Print() const {
   if (!closer_) return;
   const std::vector<double> times = closer_->times_ms();
+  const std::vector<ClosedLoop> loops = closer_->loops();
   std::printf("loop closing: %zu loops closed, median %.2f ms per keyframe (p95 %.2f)\n",
-              closer_->loops().size(), Median(times), Quantile(times, 0.95));
+              loops.size(), Median(times), Quantile(times, 0.95));
+  for (const ClosedLoop& loop : loops) {
+    std::printf("  loop: frame %d seen again at frame %d, %d inliers; query keyframe moved %.3f m, "
+                "%.2f deg\n",
+                loop.detection.match_frame_index, loop.detection.query_frame_index,
+                loop.detection.inliers, loop.query_moved_m, loop.query_turned_deg);
+  }
 }
 
 void LoopOutput::AddTo(JsonObject* json) const {

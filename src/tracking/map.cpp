@@ -1,6 +1,7 @@
 #include "dslam/tracking/map.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "dslam/core/geometry.h"
 #include "dslam/tracking/id_set.h"
@@ -187,29 +188,14 @@ Eigen::Isometry3d PartialCorrection(const MapCorrection& correction, double s) {
 }
 
 void Map::MoveMadeSince(const MapCorrection& correction) {
-  std::map<int, Eigen::Isometry3d> by_frame;  // frame index of a moved keyframe -> its correction
-  const auto move = [&](KeyFrame* keyframe) {
-    if (keyframe->frame_index < correction.first_frame) return;
-    const auto share = correction.share.find(keyframe->id);
-    const Eigen::Isometry3d T_new_old = share == correction.share.end()
-                                            ? correction.T_new_old
-                                            : PartialCorrection(correction, share->second);
-    keyframe->T_world_camera = T_new_old * keyframe->T_world_camera;
-    keyframe->measurements.T_camera_world = keyframe->T_world_camera.inverse();
-    by_frame[keyframe->frame_index] = T_new_old;
-  };
-  for (KeyFrame& keyframe : keyframes_) move(&keyframe);
-  for (auto& entry : archive_) move(&entry.second);
-  for (auto& entry : points_) {
-    MapPoint& point = entry.second;
-    if (point.created_frame < correction.first_frame) continue;
-    auto made = by_frame.upper_bound(point.created_frame);
-    const Eigen::Isometry3d& T_new_old =
-        made == by_frame.begin() ? correction.T_new_old : (--made)->second;
-    point.p_world = T_new_old * point.p_world;
-    point.cov_world = RotatedCovariance(T_new_old.linear(), point.cov_world);
-  }
-  ++corrections_;
+  MoveKeyFramesAndPoints(
+      [&](const KeyFrame& keyframe) -> std::optional<Eigen::Isometry3d> {
+        if (keyframe.frame_index < correction.first_frame) return std::nullopt;
+        const auto share = correction.share.find(keyframe.id);
+        if (share == correction.share.end()) return correction.T_new_old;
+        return PartialCorrection(correction, share->second);
+      },
+      correction.first_frame, &correction.T_new_old);
 }
 
 void Map::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected) {
@@ -219,26 +205,37 @@ void Map::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camer
   if (const KeyFrame* newest = FindKeyFrame(newest_corrected)) {
     T_new_old_newest = T_world_camera_corrected.rbegin()->second * newest->T_world_camera.inverse();
   }
+  MoveKeyFramesAndPoints(
+      [&](const KeyFrame& keyframe) -> std::optional<Eigen::Isometry3d> {
+        const auto corrected = T_world_camera_corrected.find(keyframe.id);
+        if (corrected != T_world_camera_corrected.end()) {
+          return corrected->second * keyframe.T_world_camera.inverse();
+        }
+        if (keyframe.id < newest_corrected) return std::nullopt;  // not in the correction
+        return T_new_old_newest;  // made while the correction was computed
+      },
+      std::numeric_limits<int>::min(), nullptr);
+}
+
+void Map::MoveKeyFramesAndPoints(
+    const std::function<std::optional<Eigen::Isometry3d>(const KeyFrame&)>& correction_of,
+    int min_created_frame, const Eigen::Isometry3d* before_first) {
   std::map<int, Eigen::Isometry3d> by_frame;  // frame index of a moved keyframe -> its correction
   const auto move = [&](KeyFrame* keyframe) {
-    const auto corrected = T_world_camera_corrected.find(keyframe->id);
-    Eigen::Isometry3d T_new_old = T_new_old_newest;
-    if (corrected != T_world_camera_corrected.end()) {
-      T_new_old = corrected->second * keyframe->T_world_camera.inverse();
-    } else if (keyframe->id < newest_corrected) {
-      return;  // not in the correction
-    }
-    keyframe->T_world_camera = T_new_old * keyframe->T_world_camera;
+    const std::optional<Eigen::Isometry3d> T_new_old = correction_of(*keyframe);
+    if (!T_new_old) return;
+    keyframe->T_world_camera = *T_new_old * keyframe->T_world_camera;
     keyframe->measurements.T_camera_world = keyframe->T_world_camera.inverse();
-    by_frame[keyframe->frame_index] = T_new_old;
+    by_frame[keyframe->frame_index] = *T_new_old;
   };
   for (KeyFrame& keyframe : keyframes_) move(&keyframe);
   for (auto& entry : archive_) move(&entry.second);
   for (auto& entry : points_) {
     MapPoint& point = entry.second;
+    if (point.created_frame < min_created_frame) continue;
     auto made = by_frame.upper_bound(point.created_frame);
-    if (made == by_frame.begin()) continue;  // made before every moved keyframe
-    const Eigen::Isometry3d& T_new_old = (--made)->second;
+    if (made == by_frame.begin() && before_first == nullptr) continue;
+    const Eigen::Isometry3d& T_new_old = made == by_frame.begin() ? *before_first : (--made)->second;
     point.p_world = T_new_old * point.p_world;
     point.cov_world = RotatedCovariance(T_new_old.linear(), point.cov_world);
   }

@@ -31,6 +31,7 @@ void Odometry::Reset(ResetMode mode) {
   last_on_keyframe_ = PoseOnKeyFrame();
   last_tracked_.clear();
   weak_episode_.End();
+  weak_since_keyframe_ = false;
   initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
@@ -92,9 +93,12 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
 
   // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
   UpdateMatchedPoints(current);
+  weak_since_keyframe_ = weak_since_keyframe_ ||
+                         current.pose.num_inliers < config_.tracking.reanchor_weak_inliers;
   if (NeedKeyFrame(current.pose.num_inliers)) {
     result.counts.new_points = MakeKeyFrame(current);
     result.keyframe = true;
+    weak_since_keyframe_ = false;
   }
   result.times.mapping_ms = stage.Restart();
 

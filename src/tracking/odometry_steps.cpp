@@ -261,6 +261,7 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.points.insert(keyframe.points.end(), created.begin(), created.end());
   keyframe.measurements = MeasurementsOf(current, created);
   keyframe.information = current.pose.information;
+  keyframe.weak_since_previous = weak_since_keyframe_;
   map_.AddKeyFrame(std::move(keyframe), MapLimits());
   map_.Cull(map_.keyframes()[map_.first_recent_keyframe()].frame_index, cfg.cull_min_found_ratio,
             kCullMinVisible, StaticSeenSinceFrame());

@@ -30,8 +30,9 @@ struct RenderedSequence {
 /// `frames` (written to a file of its own, then renamed: binaries running at the same time read
 /// whole files). The images are the same bit for bit either way.
 inline std::vector<CachedImages> SceneImages(const synth::SyntheticSequence& sequence,
-                                             const std::string& name, int frames, int seed) {
-  const char* folder = std::getenv("DSLAM_TEST_SCENES");
+                                             const std::string& name, int frames, int seed,
+                                             bool cache = true) {
+  const char* folder = cache ? std::getenv("DSLAM_TEST_SCENES") : nullptr;
   const std::string file = name + "_s" + std::to_string(seed) + ".bin";
   const std::string path = folder && *folder ? std::string(folder) + "/" + file : "";
   std::vector<CachedImages> images;
@@ -49,9 +50,11 @@ inline std::vector<CachedImages> SceneImages(const synth::SyntheticSequence& seq
 
 /// Renders the first `frames` frames of scenario `name` (synth::MakeScenario with `seed`); stamps,
 /// poses and the camera are the sequence's (SyntheticSequence::RenderFrame sets the same).
-inline RenderedSequence RenderSequence(const std::string& name, int frames, int seed = 1) {
+/// `cache` false: never read or write $DSLAM_TEST_SCENES (a long sequence one binary uses).
+inline RenderedSequence RenderSequence(const std::string& name, int frames, int seed = 1,
+                                       bool cache = true) {
   const synth::SyntheticSequence sequence(synth::MakeScenario(name, seed));
-  std::vector<CachedImages> images = SceneImages(sequence, name, frames, seed);
+  std::vector<CachedImages> images = SceneImages(sequence, name, frames, seed, cache);
   RenderedSequence out;
   for (int i = 0; i < frames; ++i) {
     RgbdFrame frame;

@@ -13,7 +13,7 @@ struct LoopClosingConfig {
   bool enabled = true;
   int min_frames_apart = 150;
   int consistent_keyframes = 3;
-  double min_score_ratio = 0.6;
+  double min_score_ratio = 0.1;
   int min_inliers = 40;
   double min_inlier_share = 0.3;
   int min_image_quadrants = 3;

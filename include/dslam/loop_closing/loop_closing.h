@@ -20,6 +20,7 @@
 #include "dslam/backend/keyframe_observer.h"
 #include "dslam/backend/slam.h"
 #include "dslam/core/config.h"
+#include "dslam/loop_closing/loop_correction.h"
 #include "dslam/loop_closing/loop_detector.h"
 #include "dslam/place_recognition/vocabulary.h"
 
@@ -75,6 +76,7 @@ class LoopClosing : public KeyFrameObserver {
   /// Keyframe ids in the detector's database; those the map erased leave it every
   /// kPruneKeyFrames keyframes, so that it stays as bounded as the map (tracking.max_keyframes).
   std::vector<int> in_database_;
+  std::vector<LoopEdge> loop_edges_;  ///< every accepted loop, for the next loop's pose graph
   mutable std::mutex mutex_;  ///< guards loops_ and times_ms_
   std::vector<ClosedLoop> loops_;
   std::vector<double> times_ms_;

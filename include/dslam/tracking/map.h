@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -92,6 +94,10 @@ struct KeyFrame {
   /// [-] 6x6 information of the front end's pose of this keyframe (PoseResult::information: order
   /// [dtheta, dt] of a left perturbation of T_camera_world); zero when unknown (first keyframe).
   Eigen::Matrix<double, 6, 6> information = Eigen::Matrix<double, 6, 6>::Zero();
+  /// A pose tracked since the previous keyframe (this keyframe's included) had fewer than
+  /// tracking.reanchor_weak_inliers inliers: the motion from the previous keyframe rests on a weak
+  /// episode (a loop's pose graph trusts it less, loop_correction.h).
+  bool weak_since_previous = false;
 };
 
 /// A correction of the part of the map made from `first_frame` on (Map::MoveMadeSince). The
@@ -198,6 +204,13 @@ class Map {
   void Clear();                                   ///< removes every point and keyframe
 
  private:
+  /// Moves each keyframe (window and archive) by [world_new <- world_old] correction_of(it) when
+  /// that gives one, and each point with created_frame >= min_created_frame with the newest moved
+  /// keyframe made at or before its creation frame (by *before_first when there is none; not at
+  /// all when before_first is null); counts a correction.
+  void MoveKeyFramesAndPoints(
+      const std::function<std::optional<Eigen::Isometry3d>(const KeyFrame&)>& correction_of,
+      int min_created_frame, const Eigen::Isometry3d* before_first);
   /// Adds `delta` to observing_keyframes of the points `keyframe` lists.
   void CountObservations(const KeyFrame& keyframe, int delta);
   /// Makes the keyframes with `window_ids` the window; the others go to the archive.

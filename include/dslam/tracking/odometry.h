@@ -171,6 +171,8 @@ class Odometry {
   int last_keyframe_frame_ = 0;
   int last_keyframe_static_ = 0;
   WeakEpisode weak_episode_;  ///< reanchoring.h
+  /// A pose with fewer than reanchor_weak_inliers inliers was tracked since the last keyframe.
+  bool weak_since_keyframe_ = false;
 
   /// The last tracked frame's pose on the keyframe newest at the time (AdoptNewestKeyFramePose).
   struct PoseOnKeyFrame {

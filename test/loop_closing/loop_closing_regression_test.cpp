@@ -1,0 +1,63 @@
+// Loop closing on a whole synthetic sequence (`room_tour` seed 1: one lap of a room and back into
+// its first views, a walker crossing the right wall in both laps): Slam with the back end and
+// LoopClosing as its keyframe observer, against the same run without loop closing. Tolerances
+// are measured values with margin (comment at each bound).
+#include <gtest/gtest.h>
+
+#include "dslam/backend/slam.h"
+#include "dslam/eval/loop_check.h"
+#include "dslam/loop_closing/loop_closing.h"
+#include "dslam/place_recognition/vocabulary.h"
+#include "support/ate.h"
+#include "support/rendered_sequence.h"
+
+namespace dslam {
+namespace {
+
+constexpr int kFrames = 728;  // one lap (548 frames) and 6 s into the first views again
+
+struct TourRun {
+  double refined_ate_m = 0.0;
+  std::vector<ClosedLoop> loops;
+};
+
+TourRun RunRoomTour(const test::RenderedSequence& tour, bool loop_closing) {
+  Config config;
+  config.backend.enabled = true;
+  std::vector<std::shared_ptr<KeyFrameObserver>> observers;
+  std::shared_ptr<LoopClosing> closer;
+  if (loop_closing) {
+    closer = std::make_shared<LoopClosing>(
+        config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())));
+    observers.push_back(closer);
+  }
+  Slam slam(config, BackEndMode::kSynchronous, RefinedPoseRecording::kOn, observers);
+  if (closer) closer->Attach(&slam);
+  test::TrackAll(&slam, tour.frames, [](size_t, const FrameResult&) {});
+  TourRun run;
+  run.refined_ate_m = test::AteRmse(slam.RefinedPoses(), tour.groundtruth);
+  if (closer) run.loops = closer->loops();
+  return run;
+}
+
+TEST(LoopClosingRegression, RoomTourClosesTrueLoopsAndTheLapComesTogether) {
+  // 2 GB of images: not written to the scenes shared by the test binaries (none other uses it).
+  const test::RenderedSequence tour = test::RenderSequence("room_tour", kFrames, 1, false);
+  const TourRun off = RunRoomTour(tour, false);
+  const TourRun on = RunRoomTour(tour, true);
+  ASSERT_GE(on.loops.size(), 1u);  // measured 3: frames 556, 651 and 708 see 13, 103, 165 again
+  std::vector<LoopRecord> records;
+  for (const ClosedLoop& loop : on.loops) {
+    records.push_back({loop.detection.query_stamp_s, loop.detection.match_stamp_s,
+                       loop.detection.T_match_query});
+  }
+  const LoopCheck check = CheckLoops(records, tour.groundtruth, LoopCheckOptions());
+  EXPECT_EQ(check.checked, static_cast<int>(records.size()));
+  EXPECT_EQ(check.false_loops, 0);                     // measured errors <= 8 mm, 0.21 deg
+  EXPECT_GT(off.refined_ate_m, 0.15);                  // measured 0.21 m
+  EXPECT_LT(on.refined_ate_m, 0.14);                   // measured 0.07 m
+  EXPECT_LT(on.refined_ate_m, 0.5 * off.refined_ate_m);
+}
+
+}  // namespace
+}  // namespace dslam
