@@ -7,11 +7,13 @@
 #   thread   ThreadSanitizer, workspace build/tsan: test_slam_threads (the back-end thread against
 #            the synchronous mode, Reset and destruction with work queued, keyframe observers, a
 #            dynamic scene whose map changes while a run is in flight), test_static_map_slam (the
-#            static map fused on the back-end thread while another thread reads it), then
+#            static map fused on the back-end thread while another thread reads it),
+#            test_loop_closing_threads (loop detection and keyframe corrections from the
+#            back-end thread beside tracking), then
 #            `dslam_run_dataset --threads --backend on --map --map-unmasked --objects` (the
 #            objects' mask and optical flow side by side on OpenCV's pool) on
 #            $DSLAM_SANITIZE_FRAMES (80) frames of the synthetic `walking` scenario, seed 1.
-#            DSLAM_SANITIZE_SCOPE=ci (scripts/test.sh, so CI): the two gtests only, without
+#            DSLAM_SANITIZE_SCOPE=ci (scripts/test.sh, so CI): the three gtests only, without
 #            their purely synchronous tests, and only their targets built (incremental through
 #            the compiler cache).
 #   address  AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (undefined behaviour
@@ -61,7 +63,7 @@ all_gtests() {
   sed -n 's/^dslam_test(\([A-Za-z0-9_]*\).*/\1/p' "$REPO"/test/*/CMakeLists.txt | sort
 }
 
-THREAD_GTESTS=(test_slam_threads test_static_map_slam)
+THREAD_GTESTS=(test_slam_threads test_static_map_slam test_loop_closing_threads)
 case "$KIND" in
   thread)
     TARGETS=("${THREAD_GTESTS[@]}")
