@@ -20,8 +20,12 @@ struct LoopClosingConfig {
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    // Needs the back end's keyframe map: off whenever backend.enabled is false.
-    v(Flag("enabled", "look for loops at each keyframe and correct the keyframe map"), s.enabled);
+    // Needs the back end's keyframe map: off whenever backend.enabled is false. Run by
+    // dslam_run_dataset (LoopClosing, loop_closing.h); the ROS node does not run it yet.
+    v(Flag("enabled",
+           "look for loops at each keyframe and correct the keyframe map (dslam_run_dataset; "
+           "not yet the ROS node)"),
+      s.enabled);
     v(Field("min_frames_apart", "frames", 1, 1000000,
             "a loop candidate was made at least this many frames before the query keyframe"),
       s.min_frames_apart);
