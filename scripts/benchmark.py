@@ -61,9 +61,10 @@ def evaluate(folder, camera, variant, out_dir, config, run_bin=BIN, eval_bin=BIN
     evaluation together."""
     traj = os.path.join(out_dir, f"trajectory_{variant}.txt")
     summary = os.path.join(out_dir, f"summary_{variant}.json")
+    loops = os.path.join(out_dir, f"loops_{variant}.txt")  # empty without loop closing
     cmd = [os.path.join(run_bin, "dslam_run_dataset"), "--dataset", folder, "--trajectory", traj,
            "--status", os.path.join(out_dir, f"status_{variant}.csv"), "--summary", summary,
-           "--quiet"] + VARIANTS.get(variant, [])
+           "--loops", loops, "--quiet"] + VARIANTS.get(variant, [])
     if camera:
         cmd += ["--camera", camera]
     if config:
@@ -71,7 +72,8 @@ def evaluate(folder, camera, variant, out_dir, config, run_bin=BIN, eval_bin=BIN
     run(cmd)
     metrics = os.path.join(out_dir, f"eval_{variant}.json")
     ev = [os.path.join(eval_bin, "dslam_eval"), "--groundtruth", os.path.join(folder, "groundtruth.txt"),
-          "--trajectory", traj, "--frames", os.path.join(folder, "rgb.txt"), "--json", metrics]
+          "--trajectory", traj, "--frames", os.path.join(folder, "rgb.txt"), "--json", metrics,
+          "--loops", loops]
     ev += ["--camera", camera or os.path.join(folder, "camera.yaml")]
     run(ev)
     with open(summary) as f:
@@ -91,8 +93,19 @@ HEADER = ("| sequence | ATE [m] | ATE reference [m] | ATE back end on [m] | ATE 
           "dyn. precision | dyn. recall | static wrongly dyn. | labelled dyn. | "
           "back end on: dyn. precision / recall / static wrongly dyn. | "
           "frame [ms] | frame back end on [ms] | BA [ms] median / p95 | BA keyframes / points | "
-          "window SPD [ms] median / p95 | window SPD points / unmarked |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "window SPD [ms] median / p95 | window SPD points / unmarked | "
+          "back end on: loops closed / false | back end on: loop [ms] median / p95 |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+          "---|---|")
+
+
+def loops(result):
+    """loops closed / false (dslam_eval --loops) | loop work per keyframe median / p95 [ms];
+    '-' for a run without loop closing (no median_loop_ms: mean_of keeps numbers only)."""
+    if "median_loop_ms" not in result:
+        return "- | -"
+    return (f"{result.get('loops', 0):.0f} / {result.get('false_loops', 0):.0f} | "
+            f"{result.get('median_loop_ms', 0.0):.1f} / {result.get('p95_loop_ms', 0.0):.1f}")
 
 
 def has_movers(result):
@@ -141,7 +154,8 @@ def row(name, results):
             f"{backend['median_ba_ms']:.1f} / {backend['p95_ba_ms']:.1f} | "
             f"{backend['median_ba_keyframes']:.0f} / {backend['median_ba_points']:.0f} | "
             f"{backend['median_spd_ms']:.1f} / {backend['p95_spd_ms']:.1f} | "
-            f"{backend['median_spd_points']:.0f} / {backend['median_spd_unmarked']:.0f} |")
+            f"{backend['median_spd_points']:.0f} / {backend['median_spd_unmarked']:.0f} | "
+            f"{loops(backend)} |")
 
 
 def mean_of(results):

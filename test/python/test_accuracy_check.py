@@ -109,5 +109,17 @@ class SegmentationTest(unittest.TestCase):
         self.assertEqual(benchmark.segmentation(result(0.05), False), "- | - | -")
 
 
+class LoopColumnsTest(unittest.TestCase):
+    def test_loop_columns(self):
+        self.assertEqual(benchmark.loops({"loop_closing": False}), "- | -")
+        self.assertEqual(benchmark.loops({}), "- | -")
+        closed = {"loops": 3, "false_loops": 0, "median_loop_ms": 3.86,
+                  "p95_loop_ms": 16.49}
+        self.assertEqual(benchmark.loops(closed), "3 / 0 | 3.9 / 16.5")
+        # The header has a column for every cell of a row (the row's cells end with these two).
+        self.assertEqual(benchmark.HEADER.splitlines()[0].count("|"),
+                         benchmark.HEADER.splitlines()[1].count("|"))
+
+
 if __name__ == "__main__":
     unittest.main()
