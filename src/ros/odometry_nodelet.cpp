@@ -9,6 +9,8 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "dslam/io/dataset_io.h"
+#include "dslam/loop_closing/loop_closing.h"
+#include "dslam/place_recognition/vocabulary.h"
 #include "dslam/ros/param_loader.h"
 
 namespace dslam {
@@ -57,10 +59,16 @@ void OdometryNodelet::onInit() {
     recorder_ = std::make_unique<TrajectoryRecorder>(config_.trajectory_stream);
     std::vector<std::shared_ptr<KeyFrameObserver>> observers;
     if (config.map.enabled) observers.push_back(mapper_ = std::make_shared<StaticMapper>(config));
+    if (config.backend.enabled && config.loop_closing.enabled) {  // it needs the keyframe map
+      loop_closing_ = std::make_shared<LoopClosing>(
+          config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())));
+      observers.push_back(loop_closing_);
+    }
     slam_ = std::make_unique<Slam>(
         config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous,
         RefinedPoseRecording::kOff,  // memory stays flat; the node saves causal poses
         observers);
+    if (loop_closing_) loop_closing_->Attach(slam_.get());
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
     throw std::runtime_error(std::string("dslam: invalid parameters: ") + e.what());

@@ -20,12 +20,9 @@ struct LoopClosingConfig {
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
-    // Needs the back end's keyframe map: off whenever backend.enabled is false. Run by
-    // dslam_run_dataset (LoopClosing, loop_closing.h); the ROS node does not run it yet.
-    v(Flag("enabled",
-           "look for loops at each keyframe and correct the keyframe map (dslam_run_dataset; "
-           "not yet the ROS node)"),
-      s.enabled);
+    // Needs the back end's keyframe map: off whenever backend.enabled is false. LoopClosing
+    // (loop_closing.h) in dslam_run_dataset and in the node, as one of Slam's keyframe observers.
+    v(Flag("enabled", "look for loops at each keyframe and correct the keyframe map"), s.enabled);
     v(Field("min_frames_apart", "frames", 1, 1000000,
             "a loop candidate was made at least this many frames before the query keyframe"),
       s.min_frames_apart);

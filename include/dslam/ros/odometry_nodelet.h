@@ -48,6 +48,9 @@
 #include "dslam/ros/static_map_publisher.h"
 
 namespace dslam {
+
+class LoopClosing;  // dslam/loop_closing/loop_closing.h
+
 namespace ros_layer {
 
 class OdometryNodelet : public nodelet::Nodelet {
@@ -103,6 +106,8 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::unique_ptr<FramePublisher> publisher_;            // used by the worker only
   std::unique_ptr<ObjectsPublisher> objects_publisher_;  // used by the worker only
   std::shared_ptr<StaticMapper> mapper_;                 // null unless map.enabled (own lock)
+  // null unless backend.enabled and loop_closing.enabled (own lock; loop_closing.h)
+  std::shared_ptr<LoopClosing> loop_closing_;
   std::unique_ptr<StaticMapPublisher> map_publisher_;    // timer and service (own lock)
   std::unique_ptr<StampCheck> stamps_;                   // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
