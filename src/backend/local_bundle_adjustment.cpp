@@ -256,8 +256,8 @@ CorrectionSize LargestCorrection(const Window& window, const Map& map) {
     const Eigen::Isometry3d& T_old = keyframe.T_world_camera;
     largest.metres =
         std::max(largest.metres, (T_world_camera.translation() - T_old.translation()).norm());
-    const Eigen::AngleAxisd rotation(T_world_camera.rotation() * T_old.rotation().transpose());
-    largest.degrees = std::max(largest.degrees, rotation.angle() * 180.0 / M_PI);
+    largest.degrees = std::max(
+        largest.degrees, RotationAngleDeg(T_world_camera.rotation() * T_old.rotation().transpose()));
     if (keyframe.information.isZero()) continue;
     const Eigen::Isometry3d& T_old_camera_world = keyframe.measurements.T_camera_world;
     const Eigen::AngleAxisd rotation_camera(T_camera_world.rotation() *

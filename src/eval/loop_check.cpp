@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dslam/core/geometry.h"
+
 namespace dslam {
 
 bool InterpolatePose(const Trajectory& groundtruth, double stamp_s, double max_gap_s,
@@ -43,7 +45,7 @@ LoopCheck CheckLoops(const std::vector<LoopRecord>& loops, const Trajectory& gro
       const Eigen::Isometry3d T_match_query_true = T_world_match.inverse() * T_world_query;
       const Eigen::Isometry3d error = T_match_query_true.inverse() * loop.T_match_query;
       verdict.translation_error_m = error.translation().norm();
-      verdict.rotation_error_deg = Eigen::AngleAxisd(error.rotation()).angle() * 180.0 / M_PI;
+      verdict.rotation_error_deg = RotationAngleDeg(error.rotation());
       verdict.true_distance_m = T_match_query_true.translation().norm();
       verdict.false_loop = verdict.translation_error_m > options.max_translation_m ||
                            verdict.rotation_error_deg > options.max_rotation_deg;

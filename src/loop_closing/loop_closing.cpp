@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include "dslam/core/geometry.h"
 #include "dslam/core/stopwatch.h"
 
 namespace dslam {
@@ -28,6 +29,7 @@ void LoopClosing::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
 bool LoopClosing::ProcessKeyFrame(int id) {
   if (slam_ == nullptr || !detector_) return false;
   std::optional<LoopDetection> loop;
+  LoopEdge edge;  // the loop's edge, when one is found
   PoseGraph graph;
   Eigen::Isometry3d T_world_query_before = Eigen::Isometry3d::Identity();
   const bool searching = keyframes_since_loop_ >= kKeyFramesAfterLoop;
@@ -38,8 +40,9 @@ bool LoopClosing::ProcessKeyFrame(int id) {
     in_database_.push_back(id);
     if (in_database_.size() % kPruneKeyFrames == 0) PruneErased(map);
     if (!loop || !searching) return;
+    edge = {loop->match_keyframe_id, loop->query_keyframe_id, loop->T_match_query};
     std::vector<LoopEdge> edges = loop_edges_;
-    edges.push_back({loop->match_keyframe_id, loop->query_keyframe_id, loop->T_match_query});
+    edges.push_back(edge);
     graph = BuildLoopPoseGraph(map, edges);
     T_world_query_before = graph.nodes.at(loop->query_keyframe_id).T_world_camera;
   });
@@ -47,13 +50,13 @@ bool LoopClosing::ProcessKeyFrame(int id) {
   const std::map<int, Eigen::Isometry3d> corrected = CorrectedKeyFramePoses(graph);
   if (corrected.empty() || !slam_->CorrectKeyFrames(corrected)) return false;
   keyframes_since_loop_ = 0;
-  loop_edges_.push_back({loop->match_keyframe_id, loop->query_keyframe_id, loop->T_match_query});
+  loop_edges_.push_back(edge);
   const Eigen::Isometry3d moved =
       corrected.at(loop->query_keyframe_id) * T_world_query_before.inverse();
   ClosedLoop closed;
   closed.detection = *loop;
   closed.query_moved_m = moved.translation().norm();
-  closed.query_turned_deg = Eigen::AngleAxisd(moved.rotation()).angle() * 180.0 / M_PI;
+  closed.query_turned_deg = RotationAngleDeg(moved.rotation());
   const std::lock_guard<std::mutex> lock(mutex_);
   loops_.push_back(closed);
   return true;

@@ -1,6 +1,5 @@
 #include "dslam/loop_closing/loop_correction.h"
 
-#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -12,38 +11,18 @@
 namespace dslam {
 namespace {
 
-std::vector<const KeyFrame*> AllKeyFrames(const Map& map) {
-  std::vector<const KeyFrame*> out;
-  for (const auto& entry : map.archived_keyframes()) out.push_back(&entry.second);
-  for (const KeyFrame& keyframe : map.keyframes()) out.push_back(&keyframe);
-  std::sort(out.begin(), out.end(),
-            [](const KeyFrame* a, const KeyFrame* b) { return a->id < b->id; });
-  return out;
-}
-
-// Per keyframe (in the order given): the factor on its spanning edge's sigmas,
-// kWeakEdgeSigmaScale when the motion from the previous keyframe rests on a weak episode
-// (KeyFrame::weak_since_previous), else 1.
-std::vector<double> SpanningSigmaScales(const std::vector<const KeyFrame*>& keyframes) {
-  std::vector<double> scale;
-  for (const KeyFrame* keyframe : keyframes) {
-    scale.push_back(keyframe->weak_since_previous ? kWeakEdgeSigmaScale : 1.0);
-  }
-  return scale;
-}
-
-// The spanning tree (each keyframe to the one made before it, sigmas scaled by
-// SpanningSigmaScales) and covisibility edges, measured from the current poses.
+// The spanning tree (each keyframe to the one made before it; kWeakEdgeSigmaScale times the
+// sigmas when the motion from it rests on a weak episode, KeyFrame::weak_since_previous) and
+// covisibility edges, measured from the current poses.
 void AddOdometryEdges(const Map& map, const std::vector<const KeyFrame*>& keyframes,
                       PoseGraph* graph) {
   std::set<std::pair<int, int>> spanning;
-  const std::vector<double> scale = SpanningSigmaScales(keyframes);
   for (size_t k = 1; k < keyframes.size(); ++k) {
     spanning.emplace(keyframes[k - 1]->id, keyframes[k]->id);
+    const double scale = keyframes[k]->weak_since_previous ? kWeakEdgeSigmaScale : 1.0;
     graph->edges.push_back(MakePoseGraphEdge(
         *graph, keyframes[k - 1]->id, keyframes[k]->id, PoseGraphEdgeKind::kSpanningTree,
-        PoseGraphEdgeInformation(scale[k] * kOdometryEdgeSigmaM,
-                                 scale[k] * kOdometryEdgeSigmaRad)));
+        PoseGraphEdgeInformation(scale * kOdometryEdgeSigmaM, scale * kOdometryEdgeSigmaRad)));
   }
   const PoseGraphInformation covisible =
       PoseGraphEdgeInformation(kOdometryEdgeSigmaM, kOdometryEdgeSigmaRad);
@@ -63,7 +42,7 @@ void AddOdometryEdges(const Map& map, const std::vector<const KeyFrame*>& keyfra
 }  // namespace
 
 PoseGraph BuildLoopPoseGraph(const Map& map, const std::vector<LoopEdge>& loops) {
-  const std::vector<const KeyFrame*> keyframes = AllKeyFrames(map);
+  const std::vector<const KeyFrame*> keyframes = map.AllKeyFrames();
   PoseGraph graph;
   for (const KeyFrame* keyframe : keyframes) {
     graph.nodes[keyframe->id] = PoseGraphNode{keyframe->T_world_camera, false};

@@ -3,6 +3,7 @@
 #include <unordered_set>
 
 #include "dslam/features/matching.h"
+#include "dslam/tracking/relocalisation.h"
 #include "dslam/tracking/robust_pose.h"
 
 namespace dslam {
@@ -66,9 +67,10 @@ LoopVerification VerifyLoop(const Map& map, const KeyFrame& query,
   const std::vector<PointId> train_points = MatchSidePoints(map, query, match_side);
   LoopVerification out;
   if (query_points.empty() || train_points.empty()) return out;
+  const DescriptorMatchRules rules;  // relocalisation's: the same acceptance of a match
   const std::vector<DescriptorMatch> matches =
       MatchBruteForce(PointDescriptors(map, query_points), PointDescriptors(map, train_points),
-                      kLoopMatchMaxDistance, kLoopMatchRatio);
+                      rules.max_distance_bits, rules.ratio);
   std::vector<PoseObservation> observations;
   for (const DescriptorMatch& m : matches) {
     observations.push_back(

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dataset_descriptors.h"
+#include "dslam/core/geometry.h"
 #include "dslam/eval/groundtruth_correction.h"
 #include "dslam/eval/quantile.h"
 #include "dslam/io/stamp_association.h"
@@ -128,8 +129,8 @@ class Evaluation {
 
   bool Close(int a, int b) const {
     const Eigen::Isometry3d delta = poses_[a]->inverse() * *poses_[b];
-    const double angle_deg = Eigen::AngleAxisd(delta.rotation()).angle() * 180.0 / M_PI;
-    return delta.translation().norm() <= args_.max_distance_m && angle_deg <= args_.max_angle_deg;
+    return delta.translation().norm() <= args_.max_distance_m &&
+           dslam::RotationAngleDeg(delta.rotation()) <= args_.max_angle_deg;
   }
 
   const Args& args_;

@@ -11,12 +11,8 @@ namespace {
 
 /// Every keyframe of the map, newest first.
 std::vector<const KeyFrame*> NewestFirst(const Map& map) {
-  std::vector<const KeyFrame*> all;
-  all.reserve(map.num_keyframes());
-  for (const KeyFrame& keyframe : map.keyframes()) all.push_back(&keyframe);
-  for (const auto& entry : map.archived_keyframes()) all.push_back(&entry.second);
-  std::sort(all.begin(), all.end(),
-            [](const KeyFrame* a, const KeyFrame* b) { return a->id > b->id; });
+  std::vector<const KeyFrame*> all = map.AllKeyFrames();
+  std::reverse(all.begin(), all.end());
   return all;
 }
 

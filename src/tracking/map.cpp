@@ -168,6 +168,16 @@ KeyFrame* Map::FindKeyFrame(int id) {
   return const_cast<KeyFrame*>(static_cast<const Map&>(*this).FindKeyFrame(id));
 }
 
+std::vector<const KeyFrame*> Map::AllKeyFrames() const {
+  std::vector<const KeyFrame*> all;
+  all.reserve(num_keyframes());
+  for (const auto& entry : archive_) all.push_back(&entry.second);
+  for (const KeyFrame& keyframe : keyframes_) all.push_back(&keyframe);
+  std::sort(all.begin(), all.end(),
+            [](const KeyFrame* a, const KeyFrame* b) { return a->id < b->id; });
+  return all;
+}
+
 const KeyFrame* Map::FindKeyFrame(int id) const {
   for (const KeyFrame& keyframe : keyframes_) {
     if (keyframe.id == id) return &keyframe;

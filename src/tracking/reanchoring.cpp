@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <Eigen/Cholesky>
 
+#include "dslam/core/geometry.h"
 #include "dslam/tracking/id_set.h"
 
 namespace dslam {
@@ -27,17 +29,15 @@ bool WeakEpisode::Update(int frame_index, int pose_inliers, const TrackingConfig
 std::vector<PointId> VerifiedPointsMadeBefore(const Map& map, int before_frame) {
   IdSet seen(map.size());
   std::vector<PointId> points;
-  const auto collect = [&](const KeyFrame& keyframe) {
-    if (keyframe.frame_index >= before_frame) return;
-    for (PointId id : keyframe.points) {
+  for (const KeyFrame* keyframe : map.AllKeyFrames()) {
+    if (keyframe->frame_index >= before_frame) continue;
+    for (PointId id : keyframe->points) {
       const MapPoint* point = map.Find(id);
       if (point == nullptr || !point->IsVerifiedStatic() || point->created_frame >= before_frame)
         continue;
       if (seen.Insert(id)) points.push_back(id);
     }
-  };
-  for (const auto& entry : map.archived_keyframes()) collect(entry.second);
-  for (const KeyFrame& keyframe : map.keyframes()) collect(keyframe);
+  }
   return points;
 }
 
@@ -53,17 +53,11 @@ namespace {
 
 // The keyframes (window and archive) made from `first_frame` on, oldest first.
 std::vector<const KeyFrame*> KeyFramesMadeSince(const Map& map, int first_frame) {
-  std::vector<const KeyFrame*> out;
-  for (const auto& entry : map.archived_keyframes()) {
-    if (entry.second.frame_index >= first_frame) out.push_back(&entry.second);
-  }
-  for (const KeyFrame& keyframe : map.keyframes()) {
-    if (keyframe.frame_index >= first_frame) out.push_back(&keyframe);
-  }
-  std::sort(out.begin(), out.end(), [](const KeyFrame* a, const KeyFrame* b) {
-    return a->frame_index < b->frame_index;
-  });
-  return out;
+  std::vector<const KeyFrame*> made = map.AllKeyFrames();
+  made.erase(std::remove_if(made.begin(), made.end(),
+                            [&](const KeyFrame* k) { return k->frame_index < first_frame; }),
+             made.end());
+  return made;
 }
 
 }  // namespace
@@ -87,26 +81,18 @@ std::map<int, double> CorrectionShares(const Map& map, int first_frame,
 }
 
 Eigen::Vector3d CorrectionPivot(const Map& map, int first_frame) {
-  const KeyFrame* before = nullptr;
-  const KeyFrame* oldest_since = nullptr;
-  const auto consider = [&](const KeyFrame& keyframe) {
-    if (keyframe.frame_index < first_frame) {
-      if (before == nullptr || keyframe.frame_index > before->frame_index) before = &keyframe;
-    } else if (oldest_since == nullptr || keyframe.frame_index < oldest_since->frame_index) {
-      oldest_since = &keyframe;
-    }
-  };
-  for (const auto& entry : map.archived_keyframes()) consider(entry.second);
-  for (const KeyFrame& keyframe : map.keyframes()) consider(keyframe);
-  const KeyFrame* pivot = before != nullptr ? before : oldest_since;
-  return pivot != nullptr ? Eigen::Vector3d(pivot->T_world_camera.translation())
-                          : Eigen::Vector3d::Zero();
+  const std::vector<const KeyFrame*> all = map.AllKeyFrames();  // oldest first
+  const auto since = std::find_if(all.begin(), all.end(), [&](const KeyFrame* k) {
+    return k->frame_index >= first_frame;
+  });
+  if (since != all.begin()) return (*std::prev(since))->T_world_camera.translation();
+  if (since != all.end()) return (*since)->T_world_camera.translation();
+  return Eigen::Vector3d::Zero();
 }
 
 bool CorrectionWorthApplying(const Eigen::Isometry3d& T_new_old, const TrackingConfig& config) {
-  const double angle_deg = Eigen::AngleAxisd(T_new_old.rotation()).angle() * 180.0 / M_PI;
   return T_new_old.translation().norm() >= config.reanchor_min_correction_m ||
-         angle_deg >= config.reanchor_min_correction_deg;
+         RotationAngleDeg(T_new_old.rotation()) >= config.reanchor_min_correction_deg;
 }
 
 }  // namespace dslam

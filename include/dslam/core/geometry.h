@@ -1,9 +1,12 @@
 #pragma once
 // Small helpers shared by the parts: the skew-symmetric (cross-product) matrix, the rotation of a
-// covariance into another frame and the whitening of a 3D residual.
+// covariance into another frame, the whitening of a 3D residual and a rotation's angle.
+
+#include <cmath>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 namespace dslam {
@@ -26,6 +29,11 @@ inline Eigen::Matrix3d RotatedCovariance(const Eigen::Matrix3d& R, const Eigen::
 inline Eigen::Matrix3d SqrtInformation(const Eigen::Matrix3d& covariance) {
   const Eigen::Matrix3d information = covariance.inverse();
   return Eigen::LLT<Eigen::Matrix3d>(information).matrixU();
+}
+
+/// [deg] Angle of the rotation `R` (the angle of its axis-angle form), in [0, 180].
+inline double RotationAngleDeg(const Eigen::Matrix3d& R) {
+  return Eigen::AngleAxisd(R).angle() * 180.0 / M_PI;
 }
 
 }  // namespace dslam

@@ -20,11 +20,6 @@
 
 namespace dslam {
 
-/// [bits] of 256: a verification match is nearer than this (MatchBruteForce).
-constexpr int kLoopMatchMaxDistance = 64;
-/// [-] and nearer than this times the second nearest (MatchBruteForce's ratio test).
-constexpr double kLoopMatchRatio = 0.8;
-
 /// The points of `keyframe` that take part in loop detection: those it lists (KeyFrame::points)
 /// that are in the map, IsVerifiedStatic(), carry a descriptor and have a measurement in it
 /// (measurements.by_point); in the order of KeyFrame::points, each once.

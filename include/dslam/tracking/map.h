@@ -157,6 +157,9 @@ class Map {
   const std::map<int, KeyFrame>& archived_keyframes() const { return archive_; }
   /// Keyframes in the map: window and archive.
   size_t num_keyframes() const { return keyframes_.size() + archive_.size(); }
+  /// Every keyframe of the map (window and archive), oldest first (ids ascending, which is the
+  /// order they were made in).
+  std::vector<const KeyFrame*> AllKeyFrames() const;
   /// The same, for the back end to refine poses and drop measurements (ids and order stay).
   std::deque<KeyFrame>& mutable_keyframes() { return keyframes_; }
 
