@@ -58,6 +58,10 @@ void Map::CountObservations(const KeyFrame& keyframe, int delta) {
 }
 
 void Map::SetWindow(const std::vector<int>& window_ids, int recent_keyframes) {
+  EraseRedundant(MoveWindow(window_ids, recent_keyframes));
+}
+
+std::vector<int> Map::MoveWindow(const std::vector<int>& window_ids, int recent_keyframes) {
   IdSet in_window(window_ids.size());
   for (int id : window_ids) in_window.Insert(id);
   std::vector<int> archived;
@@ -80,7 +84,7 @@ void Map::SetWindow(const std::vector<int>& window_ids, int recent_keyframes) {
             [](const KeyFrame& a, const KeyFrame& b) { return a.id < b.id; });
   keyframes_ = std::move(window);
   recent_in_window_ = std::min(keyframes_.size(), static_cast<size_t>(recent_keyframes));
-  EraseRedundant(archived);
+  return archived;
 }
 
 bool Map::IsRedundant(const KeyFrame& keyframe) const {
@@ -245,7 +249,8 @@ void Map::MoveKeyFramesAndPoints(
     if (point.created_frame < min_created_frame) continue;
     auto made = by_frame.upper_bound(point.created_frame);
     if (made == by_frame.begin() && before_first == nullptr) continue;
-    const Eigen::Isometry3d& T_new_old = made == by_frame.begin() ? *before_first : (--made)->second;
+    const Eigen::Isometry3d& T_new_old =
+        made == by_frame.begin() ? *before_first : (--made)->second;
     point.p_world = T_new_old * point.p_world;
     point.cov_world = RotatedCovariance(T_new_old.linear(), point.cov_world);
   }

@@ -129,9 +129,28 @@ struct KeyFrameMapLimits {
   static KeyFrameMapLimits Newest(int n) { return {n, 0, n}; }
 };
 
+/// Everything a keyframe map holds, as plain lists with their ids (Map::Contents, FromContents;
+/// a saved keyframe map).
+struct MapContents {
+  std::vector<MapPoint> points;     ///< ids ascending
+  std::vector<KeyFrame> keyframes;  ///< window and archive, ids ascending (oldest first)
+};
+
 /// Map points, the keyframe window and the archived keyframes (the rest of the keyframe map).
 class Map {
  public:
+  /// The map's points and keyframes (window and archive), each list by id ascending.
+  MapContents Contents() const;
+  /// A map of `contents`: ids kept, the next ids after the largest, every keyframe archived (no
+  /// window until SetWindowTo or AddKeyFrame), observing_keyframes counted from the keyframes'
+  /// point lists, ids in keyframe lists that name no point dropped. Throws std::invalid_argument
+  /// when a point or keyframe id is negative or repeats.
+  static Map FromContents(MapContents contents);
+  /// Makes the keyframes with `ids` (those in the map) the window, all of them recent; the others
+  /// go to the archive (none is erased). For a tracker that starts in a loaded map at a place
+  /// that place recognition chose.
+  void SetWindowTo(const std::vector<int>& ids);
+
   /// Adds a point, assigns and returns its id.
   PointId AddPoint(MapPoint point);
 
@@ -197,8 +216,8 @@ class Map {
   /// computed); each point with the newest moved keyframe made at or before its creation frame
   /// (position and covariance). Counts a correction.
   void CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected);
-  /// Corrections made by MoveMadeSince and CorrectKeyFrames since construction (Clear keeps the count): a copy of the
-  /// window taken before a correction must not write its poses back after it.
+  /// Corrections made by MoveMadeSince and CorrectKeyFrames since construction (Clear keeps the
+  /// count): a copy of the window taken before a correction must not write its poses back after it.
   uint64_t corrections() const { return corrections_; }
 
   /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
@@ -218,6 +237,8 @@ class Map {
   void CountObservations(const KeyFrame& keyframe, int delta);
   /// Makes the keyframes with `window_ids` the window; the others go to the archive.
   void SetWindow(const std::vector<int>& window_ids, int recent_keyframes);
+  /// SetWindow without erasing: returns the ids of the keyframes it archived.
+  std::vector<int> MoveWindow(const std::vector<int>& window_ids, int recent_keyframes);
   /// Whether most points of `keyframe` are observed by enough other keyframes.
   bool IsRedundant(const KeyFrame& keyframe) const;
   /// Erases archived keyframes with ids in `ids` that are redundant.

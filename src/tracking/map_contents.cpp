@@ -1,0 +1,61 @@
+// Map::Contents, Map::FromContents and Map::SetWindowTo: a keyframe map as plain lists and back
+// (a saved keyframe map), and the window a tracker starting in a loaded map begins with.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+
+#include "dslam/tracking/map.h"
+
+namespace dslam {
+
+MapContents Map::Contents() const {
+  MapContents contents;
+  contents.points.reserve(points_.size());
+  for (const auto& entry : points_) contents.points.push_back(entry.second);
+  std::sort(contents.points.begin(), contents.points.end(),
+            [](const MapPoint& a, const MapPoint& b) { return a.id < b.id; });
+  for (const KeyFrame* keyframe : AllKeyFrames()) contents.keyframes.push_back(*keyframe);
+  return contents;
+}
+
+Map Map::FromContents(MapContents contents) {
+  Map map;
+  for (MapPoint& point : contents.points) {
+    if (point.id < 0)
+      throw std::invalid_argument("map point with negative id " + std::to_string(point.id));
+    point.observing_keyframes = 0;
+    map.next_point_id_ = std::max(map.next_point_id_, point.id + 1);
+    const PointId id = point.id;
+    if (!map.points_.emplace(id, std::move(point)).second) {
+      throw std::invalid_argument("map point id " + std::to_string(id) + " repeats");
+    }
+  }
+  for (KeyFrame& keyframe : contents.keyframes) {
+    if (keyframe.id < 0)
+      throw std::invalid_argument("keyframe with negative id " + std::to_string(keyframe.id));
+    auto& ids = keyframe.points;
+    ids.erase(
+        std::remove_if(ids.begin(), ids.end(), [&](PointId id) { return map.Find(id) == nullptr; }),
+        ids.end());
+    map.next_keyframe_id_ = std::max(map.next_keyframe_id_, keyframe.id + 1);
+    map.CountObservations(keyframe, +1);
+    const int id = keyframe.id;
+    if (!map.archive_.emplace(id, std::move(keyframe)).second) {
+      throw std::invalid_argument("keyframe id " + std::to_string(id) + " repeats");
+    }
+  }
+  return map;
+}
+
+void Map::SetWindowTo(const std::vector<int>& ids) {
+  std::vector<int> present;
+  for (int id : ids) {
+    if (FindKeyFrame(id) != nullptr) present.push_back(id);
+  }
+  std::sort(present.begin(), present.end());
+  present.erase(std::unique(present.begin(), present.end()), present.end());
+  MoveWindow(present, static_cast<int>(present.size()));
+}
+
+}  // namespace dslam
