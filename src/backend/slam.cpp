@@ -194,9 +194,23 @@ void Slam::RethrowBackEndError() {
 }
 
 void Slam::Reset(ResetMode mode) {
+  ResetOdometry(mode, [&] { odometry_.Reset(mode); });
+}
+
+void Slam::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s) {
+  ResetOdometry(ResetMode::kNewWorld,
+                [&] { odometry_.StartInMap(std::move(map), std::move(places), timeout_s); });
+}
+
+bool Slam::Localising() const {
+  Lock lock(map_mutex_);
+  return odometry_.localising();
+}
+
+void Slam::ResetOdometry(ResetMode mode, const std::function<void()>& reset) {
   Lock lock(map_mutex_);
   DropBackEndWork();
-  odometry_.Reset(mode);
+  reset();
   QueueReset(mode);
   if (observers_.empty()) return;
   if (mode_ == BackEndMode::kThreaded) {

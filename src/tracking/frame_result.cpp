@@ -12,6 +12,8 @@ const char* ToString(TrackingState state) {
       return "recovered";
     case TrackingState::kLost:
       return "lost";
+    case TrackingState::kLocalising:
+      return "localising";
   }
   return "unknown";
 }

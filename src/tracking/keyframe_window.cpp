@@ -74,4 +74,24 @@ std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& l
   return window;
 }
 
+std::vector<int> KeyFramesAround(const Map& map, int keyframe_id, int size) {
+  const KeyFrame* centre = map.FindKeyFrame(keyframe_id);
+  if (centre == nullptr || size <= 0) return {};
+  IdSet centre_points(centre->points.size());
+  for (PointId id : centre->points) centre_points.Insert(id);
+  Ranked covisible;
+  for (const KeyFrame* keyframe : NewestFirst(map)) {
+    if (keyframe->id == keyframe_id) continue;
+    const int shared = SharedPoints(*keyframe, centre_points);
+    if (shared >= kMinCovisiblePoints) covisible.emplace_back(shared, keyframe->id);
+  }
+  SortBestFirst(&covisible);
+  std::vector<int> around{keyframe_id};
+  for (size_t i = 0; i < covisible.size() && around.size() < static_cast<size_t>(size); ++i) {
+    around.push_back(covisible[i].second);
+  }
+  std::sort(around.begin(), around.end());
+  return around;
+}
+
 }  // namespace dslam

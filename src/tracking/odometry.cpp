@@ -32,6 +32,8 @@ void Odometry::Reset(ResetMode mode) {
   last_tracked_.clear();
   weak_episode_.End();
   weak_since_keyframe_ = false;
+  places_.reset();
+  localising_ = localise_started_ = false;
   initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
@@ -53,29 +55,20 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   result.times.features_ms = stage.Restart();
   const std::string shortage = FeatureShortage(current.features);
   if (!shortage.empty()) return Lost(&current, std::move(result), shortage.c_str());
-  // After lost_frames_before_reset lost frames the map is re-initialised, unless this frame can
-  // still be relocalised in it (step 3): e.g. a covered lens, a long gap in the input.
-  if (!initialised_ && !CanRelocalise()) return Initialise(&current, std::move(result));
-
-  // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
-  const double max_gap_s = config_.tracking.max_prediction_gap_s;
-  const Eigen::Isometry3d T_camera_world_predicted =
-      motion_.Predict(frame.stamp_s, max_gap_s).inverse();
-  const bool wide = lost_frames_ > 0 || motion_.IsGap(frame.stamp_s, max_gap_s);
-  MatchLocalMapPoints(&current, T_camera_world_predicted, wide);
-  result.times.matching_ms = stage.Restart();
-
-  // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
-  //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
-  //    When that fails (a jump the prediction missed): match again with the wide radius, then
-  //    relocalise by descriptors.
-  const bool have_initial_pose =
-      SolveInitialPose(&current, T_camera_world_predicted, result.frame_index) ||
-      (!wide &&
-       RematchAndSolveInitialPose(&current, T_camera_world_predicted,
-                                  config_.tracking.wide_search_radius_px, result.frame_index)) ||
-      Relocalise(&current, result.frame_index);
-  result.times.initial_pose_ms = stage.Restart();
+  // While starting in a loaded keyframe map (StartInMap): no pose until the frame is
+  // relocalised in the map at a place that place recognition names.
+  bool have_initial_pose = false;
+  if (localising_) {
+    have_initial_pose = LocaliseInLoadedMap(&current, result.frame_index);
+    result.times.initial_pose_ms = stage.Restart();
+    if (!have_initial_pose) return NotLocalised(&current, std::move(result));
+  } else {
+    // After lost_frames_before_reset lost frames the map is re-initialised, unless this frame
+    // can still be relocalised in it (step 3): e.g. a covered lens, a long gap in the input.
+    if (!initialised_ && !CanRelocalise()) return Initialise(&current, std::move(result));
+    have_initial_pose = TrackInitialPose(&current, &result);
+  }
+  stage.Restart();
   if (!have_initial_pose) return Untracked(&current, std::move(result), "too few pose inliers");
 
   // 4. Front-end static point determination: Delaunay graph (built in step 3), inconsistent edge
@@ -93,8 +86,8 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
 
   // 6. Map management (Sec. V-C): update matched points, keyframe with new points, culling.
   UpdateMatchedPoints(current);
-  weak_since_keyframe_ = weak_since_keyframe_ ||
-                         current.pose.num_inliers < config_.tracking.reanchor_weak_inliers;
+  weak_since_keyframe_ =
+      weak_since_keyframe_ || current.pose.num_inliers < config_.tracking.reanchor_weak_inliers;
   if (NeedKeyFrame(current.pose.num_inliers)) {
     result.counts.new_points = MakeKeyFrame(current);
     result.keyframe = true;
@@ -113,6 +106,30 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   Summarise(current, &result);
   result.times.total_ms = total.ElapsedMs();
   return result;
+}
+
+bool Odometry::TrackInitialPose(Current* current, FrameResult* result) {
+  Stopwatch stage;
+  // 2. Match marked and unmarked local-map points around the predicted pose (Sec. V-B).
+  const double stamp_s = current->frame->stamp_s;
+  const double max_gap_s = config_.tracking.max_prediction_gap_s;
+  const Eigen::Isometry3d T_camera_world_predicted = motion_.Predict(stamp_s, max_gap_s).inverse();
+  const bool wide = lost_frames_ > 0 || motion_.IsGap(stamp_s, max_gap_s);
+  MatchLocalMapPoints(current, T_camera_world_predicted, wide);
+  result->times.matching_ms = stage.Restart();
+
+  // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
+  //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
+  //    When that fails (a jump the prediction missed): match again with the wide radius, then
+  //    relocalise by descriptors.
+  const bool have_initial_pose =
+      SolveInitialPose(current, T_camera_world_predicted, result->frame_index) ||
+      (!wide &&
+       RematchAndSolveInitialPose(current, T_camera_world_predicted,
+                                  config_.tracking.wide_search_radius_px, result->frame_index)) ||
+      Relocalise(current, result->frame_index);
+  result->times.initial_pose_ms = stage.Restart();
+  return have_initial_pose;
 }
 
 std::string Odometry::FeatureShortage(const FrameFeatures& features) const {
@@ -190,6 +207,16 @@ bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
     Reset(ResetMode::kNewWorld);
     reset = true;
     result->message = "time went backwards: reset";
+  } else if (localising_ && localise_started_ &&
+             frame.stamp_s - localise_start_s_ > localise_timeout_s_) {
+    Reset(ResetMode::kNewWorld);
+    reset = true;
+    result->message = "not localised in the loaded keyframe map within " +
+                      std::to_string(localise_timeout_s_) + " s: a new map starts";
+  }
+  if (localising_ && !localise_started_) {
+    localise_started_ = true;
+    localise_start_s_ = frame.stamp_s;
   }
   have_stamp_ = true;
   last_stamp_s_ = frame.stamp_s;

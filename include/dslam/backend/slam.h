@@ -22,9 +22,10 @@
 //   determination and local BA on the copy, the expensive part) without the lock: the job's copy
 //   is the back-end thread's alone. A Reset while a job runs increments the generation; the job's
 //   results are then dropped.
-// - Every other public member (Reset, WaitForBackEnd, TakeUnreportedRuns, HoldBackEnd,
-//   RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames) takes it; getters return copies, never references into the map.
-//   config() is immutable.
+// - Every other public member (Reset, StartInMap, Localising, WaitForBackEnd, TakeUnreportedRuns,
+// HoldBackEnd,
+//   RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames) takes it; getters return copies, never
+//   references into the map. config() is immutable.
 // - Keyframe observers (keyframe_observer.h, given to the constructor; the static map): under the
 //   lock the tracking thread queues each new keyframe (a shallow copy of its images and its point
 //   labels) and each reset as events. The thread that delivers them takes the queue and the
@@ -104,6 +105,13 @@ class Slam {
   /// thread, WaitForBackEnd waits for it).
   void Reset(ResetMode mode);
 
+  /// As Reset(ResetMode::kNewWorld), then the odometry starts in `map` (a loaded keyframe map;
+  /// Odometry::StartInMap: no pose until a frame is relocalised in it at a place `places` names,
+  /// a new world after `timeout_s` [s] without). Throws std::invalid_argument as StartInMap.
+  void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s);
+  /// Between StartInMap and the first frame localised in its map (Odometry::localising).
+  bool Localising() const;
+
   /// Threaded: blocks until no keyframe is queued, no run is in progress and the observers have
   /// every event (releases both holds first). Synchronous: returns at once. Rethrows an exception
   /// of the back-end thread.
@@ -150,6 +158,9 @@ class Slam {
  private:
   using Lock = std::unique_lock<std::mutex>;
 
+  /// Drops the back end's work, calls `reset` (which resets the odometry) and queues a reset of
+  /// `mode` for the observers, delivering it as Reset describes.
+  void ResetOdometry(ResetMode mode, const std::function<void()>& reset);
   /// Synchronous local mapping on the window the newest keyframe completes (lock held): the
   /// same job as the back-end thread's, copied, run and applied at once.
   BackEndStatus RunLocalMapping();

@@ -21,6 +21,9 @@ enum class TrackingState {
   kTracking,     ///< pose from static points of the local map
   kRecovered,    ///< pose from a RANSAC (static points too few) or relocalised by descriptors
   kLost,         ///< no trustworthy pose: none is reported
+  /// started in a loaded keyframe map (Odometry::StartInMap) and not yet relocalised in it: no
+  /// pose is reported
+  kLocalising,
 };
 
 /// Lower-case name of a state ("tracking", ...), as written to the status CSV.

@@ -25,4 +25,9 @@ constexpr double kNearbyKeyFrameDeg = 20.0;
 /// the newest keyframe (most first); places left go to the other list.
 std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& limits);
 
+/// Ids of the keyframe `keyframe_id` and of up to `size` - 1 keyframes of the map sharing the
+/// most points (at least kMinCovisiblePoints) with it, ascending; empty when it is not in the map.
+/// The window of a tracker relocalising at a place that place recognition named.
+std::vector<int> KeyFramesAround(const Map& map, int keyframe_id, int size);
+
 }  // namespace dslam

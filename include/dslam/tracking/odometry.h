@@ -12,6 +12,7 @@
 #include "dslam/tracking/front_end_static_points.h"
 #include "dslam/tracking/map.h"
 #include "dslam/tracking/motion_model.h"
+#include "dslam/tracking/place_lookup.h"
 #include "dslam/tracking/pose_estimation.h"
 #include "dslam/tracking/reanchoring.h"
 
@@ -50,6 +51,17 @@ class Odometry {
   /// (kKeepPose) or at the world origin (kNewWorld). Frame indices restart at 0.
   void Reset(ResetMode mode);
 
+  /// Starts over in `map` (a loaded keyframe map; its world frame becomes this odometry's): the
+  /// motion model is forgotten and frames have no pose (TrackingState::kLocalising) until one is
+  /// relocalised in the map at a place `places` names (LocaliseInLoadedMap). When none is within
+  /// `timeout_s` [s] of the first frame's stamp, that frame resets into a new world
+  /// (ResetMode::kNewWorld: FrameResult::reset and message say so) and a new map starts there.
+  /// Frame indices continue after the newest frame of `map`. Throws std::invalid_argument when
+  /// `places` is null, `timeout_s` is not positive or tracking.relocalisation is off.
+  void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s);
+  /// Between StartInMap and the first frame localised in the map (or its timeout).
+  bool localising() const { return localising_; }
+
   const Map& map() const { return map_; }  ///< the local map (for visualisation)
   /// The local map, for the back end to refine between frames (Slam); call
   /// AdoptNewestKeyFramePose() after changing keyframe poses.
@@ -83,6 +95,15 @@ class Odometry {
   };
 
   bool BeginFrame(const RgbdFrame& frame, FrameResult* result);
+  /// Steps 2 and 3 of ProcessFrame: the local map matched around the prediction and the initial
+  /// pose from it (with a wider search and relocalisation when that fails). False: no pose.
+  bool TrackInitialPose(Current* current, FrameResult* result);
+  /// While localising: the window set around each keyframe `places_` names for the frame (best
+  /// first, KeyFramesAround) and the frame relocalised in it (Relocalise); true at the first
+  /// success, which ends localising. False: the window is left at the last place tried.
+  bool LocaliseInLoadedMap(Current* current, int frame_index);
+  /// The frame before the loaded map localised it: no pose, TrackingState::kLocalising.
+  FrameResult NotLocalised(Current* current, FrameResult result);
   FrameResult Initialise(Current* current, FrameResult result);
   void MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world, bool wide);
   PoseResult SolvePoseFromStaticPoints(const Current& current,
@@ -170,7 +191,12 @@ class Odometry {
   int lost_frames_ = 0;
   int last_keyframe_frame_ = 0;
   int last_keyframe_static_ = 0;
-  WeakEpisode weak_episode_;  ///< reanchoring.h
+  WeakEpisode weak_episode_;             ///< reanchoring.h
+  std::shared_ptr<PlaceLookup> places_;  ///< StartInMap's, until localised or reset
+  bool localising_ = false;              ///< StartInMap was called and no frame localised yet
+  double localise_timeout_s_ = 0.0;      ///< [s] StartInMap's timeout
+  bool localise_started_ = false;        ///< a frame was processed since StartInMap
+  double localise_start_s_ = 0.0;        ///< [s] stamp of that first frame
   /// A pose with fewer than reanchor_weak_inliers inliers was tracked since the last keyframe.
   bool weak_since_keyframe_ = false;
 

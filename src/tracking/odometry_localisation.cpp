@@ -1,0 +1,58 @@
+// Odometry::StartInMap and the frames before the loaded map localises one: a tracker that starts
+// in a saved keyframe map has no pose until a frame is relocalised in it, at a place that place
+// recognition (PlaceLookup) names.
+#include <stdexcept>
+
+#include "dslam/tracking/keyframe_window.h"
+#include "dslam/tracking/odometry.h"
+
+namespace dslam {
+namespace {
+
+// Places (keyframes named by PlaceLookup, best first) tried per frame while localising: each
+// costs a descriptor match and a RANSAC.
+constexpr size_t kPlacesTriedPerFrame = 3;
+
+}  // namespace
+
+void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s) {
+  if (places == nullptr) throw std::invalid_argument("Odometry::StartInMap: no place lookup");
+  if (!(timeout_s > 0.0)) throw std::invalid_argument("Odometry::StartInMap: timeout must be > 0");
+  if (!config_.tracking.relocalisation) {
+    throw std::invalid_argument("Odometry::StartInMap: needs tracking.relocalisation");
+  }
+  Reset(ResetMode::kNewWorld);
+  int newest_frame = -1;
+  for (const KeyFrame* keyframe : map.AllKeyFrames()) {
+    newest_frame = std::max(newest_frame, keyframe->frame_index);
+  }
+  map_ = std::move(map);
+  frame_index_ = newest_frame + 1;
+  places_ = std::move(places);
+  localise_timeout_s_ = timeout_s;
+  localising_ = true;
+}
+
+bool Odometry::LocaliseInLoadedMap(Current* current, int frame_index) {
+  const std::vector<int> named = places_->Candidates(map_, current->features);
+  for (size_t i = 0; i < named.size() && i < kPlacesTriedPerFrame; ++i) {
+    map_.SetWindowTo(KeyFramesAround(map_, named[i], config_.tracking.window_keyframes));
+    current->local_points = map_.LocalPoints({}, StaticSeenSinceFrame());
+    if (!Relocalise(current, frame_index)) continue;
+    localising_ = false;
+    places_.reset();
+    initialised_ = true;
+    return true;
+  }
+  return false;
+}
+
+FrameResult Odometry::NotLocalised(Current* current, FrameResult result) {
+  result.state = TrackingState::kLocalising;
+  result.has_pose = result.has_previous_pose = false;
+  result.message = "localising in the loaded keyframe map";
+  Summarise(*current, &result);
+  return result;
+}
+
+}  // namespace dslam

@@ -1,0 +1,93 @@
+// Odometry::StartInMap without the place recognition of loop_closing: a PlaceLookup that names a
+// given keyframe, or none, on a short static_room sequence rendered in-process.
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "dslam/tracking/odometry.h"
+#include "support/rendered_sequence.h"
+
+namespace dslam {
+namespace {
+
+constexpr char kScene[] = "static_room";
+constexpr int kFrames = 40;
+
+/// Names `ids` for every frame and counts the queries.
+class FixedPlaces : public PlaceLookup {
+ public:
+  explicit FixedPlaces(std::vector<int> ids) : ids_(std::move(ids)) {}
+  std::vector<int> Candidates(const Map&, const FrameFeatures&) override {
+    ++queries;
+    return ids_;
+  }
+  int queries = 0;
+
+ private:
+  std::vector<int> ids_;
+};
+
+/// The map of an odometry run over frames [0, frames).
+Map MapOfFirstFrames(int frames) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  Odometry odometry{Config()};
+  for (int i = 0; i < frames; ++i) odometry.ProcessFrame(room.frames[i]);
+  return Map::FromContents(odometry.map().Contents());
+}
+
+TEST(OdometryLocalisation, LocalisesAtTheNamedPlaceInTheLoadedWorld) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  Map map = MapOfFirstFrames(20);
+  const int newest_frame = map.AllKeyFrames().back()->frame_index;
+  Odometry odometry{Config()};
+  auto places = std::make_shared<FixedPlaces>(std::vector<int>{0});
+  odometry.StartInMap(std::move(map), places, 5.0);
+  EXPECT_TRUE(odometry.localising());
+  const FrameResult result = odometry.ProcessFrame(room.frames[25]);
+  ASSERT_TRUE(result.has_pose);
+  EXPECT_FALSE(odometry.localising());
+  EXPECT_FALSE(result.has_previous_pose);       // a relocalised pose starts a new stretch
+  EXPECT_GT(result.frame_index, newest_frame);  // indices go on after the loaded map's
+  const Eigen::Isometry3d truth =
+      room.groundtruth[0].T_world_camera.inverse() * room.groundtruth[25].T_world_camera;
+  EXPECT_LT((result.T_world_camera.translation() - truth.translation()).norm(), 0.01);
+  EXPECT_EQ(places->queries, 1);
+  EXPECT_TRUE(odometry.ProcessFrame(room.frames[26]).has_pose);
+  EXPECT_EQ(places->queries, 1);  // asked only while localising
+}
+
+TEST(OdometryLocalisation, WithoutAPlaceTheTimeoutStartsANewWorld) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  Odometry odometry{Config()};
+  odometry.StartInMap(MapOfFirstFrames(20), std::make_shared<FixedPlaces>(std::vector<int>{}),
+                      0.25);
+  // 30 Hz: frames 20-27 are within 0.25 s of frame 20, frame 28 is 0.267 s after it.
+  for (int i = 20; i < 28; ++i) {
+    const FrameResult result = odometry.ProcessFrame(room.frames[i]);
+    EXPECT_FALSE(result.has_pose) << i;
+    EXPECT_EQ(result.state, TrackingState::kLocalising) << i;
+  }
+  const FrameResult timed_out = odometry.ProcessFrame(room.frames[28]);
+  EXPECT_TRUE(timed_out.reset);
+  EXPECT_NE(timed_out.message.find("not localised"), std::string::npos) << timed_out.message;
+  EXPECT_EQ(timed_out.state, TrackingState::kInitialised);
+  EXPECT_TRUE(timed_out.has_pose);  // the first frame of a new world: the origin
+  EXPECT_TRUE(timed_out.T_world_camera.isApprox(Eigen::Isometry3d::Identity()));
+  EXPECT_FALSE(odometry.localising());
+  EXPECT_TRUE(odometry.ProcessFrame(room.frames[29]).has_pose);
+}
+
+TEST(OdometryLocalisation, StartInMapRefusesWhatCannotLocalise) {
+  Odometry odometry{Config()};
+  EXPECT_THROW(odometry.StartInMap(Map(), nullptr, 1.0), std::invalid_argument);
+  auto places = std::make_shared<FixedPlaces>(std::vector<int>{});
+  EXPECT_THROW(odometry.StartInMap(Map(), places, 0.0), std::invalid_argument);
+  Config no_relocalisation;
+  no_relocalisation.tracking.relocalisation = false;
+  Odometry without{no_relocalisation};
+  EXPECT_THROW(without.StartInMap(Map(), places, 1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dslam
