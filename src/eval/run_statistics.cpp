@@ -37,6 +37,7 @@ void RunSummary::Add(const FrameResult& result) {
   ++frames_;
   if (result.has_pose) ++with_pose_;
   if (result.state == TrackingState::kLost) ++lost_;
+  if (result.state == TrackingState::kLocalising) ++localising_;
   labelled_static_ += result.counts.static_points;
   labelled_dynamic_ += result.counts.dynamic_points;
   if (result.state == TrackingState::kTracking || result.state == TrackingState::kRecovered) {

@@ -30,22 +30,22 @@ std::vector<std::string> Split(const std::string& text, char separator) {
 }
 
 TEST(StatusTable, CsvColumnsKeepTheirNamesAndOrder) {
-  EXPECT_EQ(StatusCsvHeader(),
-            "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
-            "candidates,pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
-            "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,"
-            "total_ms,tracking_ms,backlog,backend_delivered,window_keyframes,ba_points,"
-            "ba_measurements,ba_outliers,ba_iterations,ba_chi2_per_dof,ba_inlier_chi2_per_dof,ba_ms,"
-            "spd_points,spd_culled_edges,spd_unmarked,spd_ms");
+  EXPECT_EQ(
+      StatusCsvHeader(),
+      "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
+      "candidates,pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
+      "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,"
+      "total_ms,tracking_ms,backlog,backend_delivered,window_keyframes,ba_points,"
+      "ba_measurements,ba_outliers,ba_iterations,ba_chi2_per_dof,ba_inlier_chi2_per_dof,ba_ms,"
+      "spd_points,spd_culled_edges,spd_unmarked,spd_ms");
 }
 
 TEST(StatusTable, SummaryKeysKeepTheirNamesAndOrder) {
   EXPECT_EQ(BackEndSummaryFields(),
-            (std::vector<std::string>{"ba_ms", "ba_keyframes", "ba_points", "ba_outliers",
-                                      "ba_iterations", "spd_ms", "spd_graph_ms", "spd_culling_ms",
-                                      "spd_components_ms", "spd_points", "spd_edges",
-                                      "spd_culled_edges", "spd_unmarked", "ba_chi2_per_dof",
-                                      "ba_inlier_chi2_per_dof"}));
+            (std::vector<std::string>{
+                "ba_ms", "ba_keyframes", "ba_points", "ba_outliers", "ba_iterations", "spd_ms",
+                "spd_graph_ms", "spd_culling_ms", "spd_components_ms", "spd_points", "spd_edges",
+                "spd_culled_edges", "spd_unmarked", "ba_chi2_per_dof", "ba_inlier_chi2_per_dof"}));
   JsonObject json;
   AddBackEndQuantiles(RunSummary(), 6, &json);
   const std::string text = json.ToString();
@@ -90,6 +90,23 @@ TEST(StatusTable, CsvValuesFollowTheHeader) {
   ASSERT_EQ(columns.size(), values.size());
   for (size_t i = 0; i < columns.size(); ++i) EXPECT_EQ(values[i], expected.at(columns[i]));
   EXPECT_EQ(BackEndCsvValues(BackEndStatus()), "0,0,0,0,0,0.000,0.000,0.000,0,0,0,0.000");
+}
+
+TEST(StatusTable, SummaryCountsLostAndLocalisingFramesApart) {
+  RunSummary summary;
+  FrameResult result;
+  result.state = TrackingState::kLocalising;
+  summary.Add(result);
+  summary.Add(result);
+  result.state = TrackingState::kLost;
+  summary.Add(result);
+  result.state = TrackingState::kTracking;
+  result.has_pose = true;
+  summary.Add(result);
+  EXPECT_EQ(summary.frames(), 4);
+  EXPECT_EQ(summary.localising_frames(), 2);
+  EXPECT_EQ(summary.lost_frames(), 1);
+  EXPECT_EQ(summary.frames_with_pose(), 1);
 }
 
 TEST(StatusTable, QuantilesAreOverTheRunsOfTheirStage) {

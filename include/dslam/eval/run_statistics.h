@@ -29,6 +29,9 @@ class RunSummary {
   int frames() const { return frames_; }               ///< frames processed
   int frames_with_pose() const { return with_pose_; }  ///< frames with a reported pose
   int lost_frames() const { return lost_; }            ///< frames in state kLost
+  /// Frames in state kLocalising (before a run that started in a loaded keyframe map found
+  /// its place in it).
+  int localising_frames() const { return localising_; }
 
   /// Writes a table of per-stage medians [ms] and counts (median points in the graph, ...).
   void PrintStages(std::ostream& out) const;
@@ -67,7 +70,7 @@ class RunSummary {
   double LabelledDynamicShare() const;
 
  private:
-  int frames_ = 0, with_pose_ = 0, lost_ = 0;
+  int frames_ = 0, with_pose_ = 0, lost_ = 0, localising_ = 0;
   std::vector<StageTimes> times_;
   std::vector<double> frame_ms_, tracking_ms_;
   int max_backlog_ = 0;
