@@ -41,8 +41,8 @@ void FillBackEndStatus(const BackEndStatus& backend, dslam::FrameStatus* status)
 /// its name (test/ros/status_message_test.cpp checks them).
 void FillLoopStatus(const LoopStatus& loops, dslam::FrameStatus* status);
 
-/// Where the data of the tracker's world (clouds, graph markers, moving objects, static map, path)
-/// is published for one frame.
+/// Where the data of the tracker's world (clouds, graph markers, moving objects, static map, path,
+/// keyframe path, loop edges) is published for one frame.
 struct WorldDataFrame {
   std::string frame_id;  ///< WorldDataFrameId(config): map_frame or odom_frame
   /// [m] Maps points of the tracker's world (the first frame's optical frame) into frame_id:
