@@ -31,6 +31,12 @@ void FillBackEndStatus(const BackEndStatus& b, dslam::FrameStatus* s) {
   s->spd_ms = b.spd.total_ms;
 }
 
+void FillLoopStatus(const LoopStatus& loops, dslam::FrameStatus* s) {
+  s->loop_closures = loops.loop_closures;
+  s->loop_keyframes = loops.loop_keyframes;
+  s->loop_ms = loops.loop_ms;
+}
+
 FramePublisher::FramePublisher(ros::NodeHandle& nh, const NodeConfig& config) : config_(config) {
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   path_pub_ = nh.advertise<nav_msgs::Path>("path", 1);
@@ -167,6 +173,7 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
   FillBackEndStatus(r.backend, &s);
   s.backend_delivered = r.backend_thread.delivered;
   s.backend_backlog = r.backend_thread.backlog;
+  FillLoopStatus(loops_, &s);
   s.latency_ms = latency_ms;
   s.frames_received = counters.received;
   s.frames_processed = counters.processed;

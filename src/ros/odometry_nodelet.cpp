@@ -9,8 +9,10 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "dslam/io/dataset_io.h"
+#include "dslam/io/trajectory_io.h"
 #include "dslam/loop_closing/loop_closing.h"
 #include "dslam/place_recognition/vocabulary.h"
+#include "dslam/ros/keyframe_map_outputs.h"
 #include "dslam/ros/param_loader.h"
 
 namespace dslam {
@@ -66,8 +68,9 @@ void OdometryNodelet::onInit() {
     }
     slam_ = std::make_unique<Slam>(
         config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous,
-        RefinedPoseRecording::kOff,  // memory stays flat; the node saves causal poses
-        observers);
+        // For save_refined_trajectory: per tracked frame its pose on its keyframe (144 bytes;
+        // RefinedTrajectory), per keyframe its latest pose.
+        RefinedPoseRecording::kOn, observers);
     if (loop_closing_) loop_closing_->Attach(slam_.get());
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
@@ -78,12 +81,15 @@ void OdometryNodelet::onInit() {
   objects_publisher_ = std::make_unique<ObjectsPublisher>(
       nh, slam_->config(),
       config_.backend_threads ? WorkerMode::kThreaded : WorkerMode::kSynchronous);
+  keyframe_map_publisher_ = std::make_unique<KeyFrameMapPublisher>(nh, *slam_, loop_closing_);
   if (mapper_) map_publisher_ = std::make_unique<StaticMapPublisher>(nh, config_, mapper_);
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
   static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
   reset_srv_ = nh.advertiseService("reset", &OdometryNodelet::OnReset, this);
   save_srv_ = nh.advertiseService("save_trajectory", &OdometryNodelet::OnSaveTrajectory, this);
+  save_refined_srv_ = nh.advertiseService("save_refined_trajectory",
+                                          &OdometryNodelet::OnSaveRefinedTrajectory, this);
   worker_ = std::thread(&OdometryNodelet::WorkerLoop, this);
   Subscribe(nh);
   WatchInputs(nh);
@@ -182,6 +188,29 @@ bool OdometryNodelet::OnSaveTrajectory(dslam::SaveTrajectory::Request& req,
       res.message += " (current segment; " + std::to_string(segments - 1) +
                      " earlier segment(s) beside it as " + SegmentPath(req.path, 1) + ", ...)";
     }
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+  }
+  return true;
+}
+
+bool OdometryNodelet::OnSaveRefinedTrajectory(dslam::SaveTrajectory::Request& req,
+                                              dslam::SaveTrajectory::Response& res) {
+  std::optional<double> first_stamp_s;
+  {
+    const std::lock_guard<std::mutex> lock(trajectory_mutex_);
+    first_stamp_s = segment_first_stamp_s_;
+  }
+  try {
+    // The map lock only while RefinedPoses copies; the file is written after it.
+    const Trajectory segment =
+        first_stamp_s ? CurrentSegment(slam_->RefinedPoses(), *first_stamp_s) : Trajectory();
+    WriteTumTrajectory(req.path, segment);
+    res.poses = static_cast<int>(segment.size());
+    res.success = true;
+    res.message = "wrote " + std::to_string(res.poses) +
+                  " refined poses of the current segment to " + req.path;
   } catch (const std::exception& e) {
     res.success = false;
     res.message = e.what();

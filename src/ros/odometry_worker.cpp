@@ -96,8 +96,13 @@ bool OdometryNodelet::ApplyRequestedReset() {
 
 void OdometryNodelet::RecordPose(const FrameResult& result, bool new_world) {
   const std::lock_guard<std::mutex> lock(trajectory_mutex_);
-  if (new_world) recorder_->StartSegment();
-  if (result.has_pose) recorder_->Add({result.stamp_s, result.T_world_camera});
+  if (new_world) {
+    recorder_->StartSegment();
+    segment_first_stamp_s_.reset();
+  }
+  if (!result.has_pose) return;
+  recorder_->Add({result.stamp_s, result.T_world_camera});
+  if (!segment_first_stamp_s_) segment_first_stamp_s_ = result.stamp_s;
 }
 
 void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
@@ -106,6 +111,8 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
   header.frame_id =
       NormaliseFrameId(config_.camera_frame.empty() ? header.frame_id : config_.camera_frame);
   const Eigen::Isometry3d& T_base_camera = CameraMount(header.frame_id, header.stamp);
+  const bool loops_changed = keyframe_map_publisher_->RefreshLoopStatus(result.keyframe);
+  publisher_->SetLoopStatus(keyframe_map_publisher_->loop_status());
   const double latency_ms = (ros::WallTime::now() - input.received).toSec() * 1e3;
   publisher_->Publish(result, frame, header, T_base_camera, Counters(), latency_ms);
   const WorldDataFrame world = publisher_->WorldData(T_base_camera);
@@ -113,6 +120,8 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
   std_msgs::Header world_header = header;
   world_header.frame_id = world.frame_id;
   objects_publisher_->Publish(frame, result, world_header, world.T_frame_world);
+  keyframe_map_publisher_->Publish(result.keyframe || loops_changed, world_header,
+                                   world.T_frame_world, T_base_camera);
 }
 
 FrameCounters OdometryNodelet::Counters() const {

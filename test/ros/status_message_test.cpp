@@ -1,7 +1,8 @@
 // FillBackEndStatus sets each back-end field of FrameStatus from the BackEndStatus::Fields()
-// entry of the same name: the message is serialized as on the wire and read back field by field
-// with the layout of msg/FrameStatus.msg, so the check goes through the names of the .msg file
-// and of the table, never through the generated struct's members.
+// entry of the same name, and FillLoopStatus each loop field from the LoopStatus member of its
+// name: the message is serialized as on the wire and read back field by field with the layout of
+// msg/FrameStatus.msg, so the check goes through the names of the .msg file and of the table,
+// never through the generated struct's members.
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -92,6 +93,20 @@ TEST(StatusMessage, EachBackEndFieldComesFromTheTableFieldOfItsName) {
       EXPECT_EQ(values.at(name), name == set ? expected : 0.0) << name << " with " << set << " set";
     }
   }
+}
+
+// Each loop closing field goes to the message field of its name.
+TEST(StatusMessage, LoopFieldsComeFromLoopStatus) {
+  LoopStatus loops;
+  loops.loop_closures = 3;
+  loops.loop_keyframes = 41;
+  loops.loop_ms = 7.5;
+  dslam::FrameStatus message;
+  FillLoopStatus(loops, &message);
+  const std::map<std::string, double> values = Decode(message);
+  EXPECT_EQ(values.at("loop_closures"), 3.0);
+  EXPECT_EQ(values.at("loop_keyframes"), 41.0);
+  EXPECT_EQ(values.at("loop_ms"), 7.5);
 }
 
 }  // namespace

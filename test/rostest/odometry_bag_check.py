@@ -8,7 +8,11 @@ map arrives on `static_map` (latched: also to a subscriber that comes late) and 
 writes it as a PCD file with fields x y z rgb (and fails on a path it cannot write). With the
 private parameter ~expect_backend (odometry_bag_backend.test: the back end on, on its own
 thread), the status messages must also report back-end runs delivered by later frames, and its
-corrections must reach map -> odom (without the back end it stays exactly the identity)."""
+corrections must reach map -> odom (without the back end it stays exactly the identity).
+`save_refined_trajectory` writes the same frames as `save_trajectory` (one segment) in TUM format,
+close to the ground truth, and refuses a path it cannot write; `keyframe_path` has each keyframe's
+base pose in the map frame where the refined trajectory has it, `loop_edges` are in the map frame
+and the status reports loop closing (zeros without the back end; no loop on this short bag)."""
 
 import os
 import sys
@@ -21,7 +25,7 @@ import numpy as np
 import rospkg
 import rospy
 import rostest
-from nav_msgs.msg import Odometry
+from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import PointCloud2
 from tf2_msgs.msg import TFMessage
 from visualization_msgs.msg import MarkerArray
@@ -38,6 +42,9 @@ from rostest_helpers import (Recorder, is_identity, map_odom_transforms, matrix,
 FRAMES = 60
 ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
 MIN_MAP_POINTS = 10000  # static_room, 60 frames: 24957 points measured (5 cm voxels)
+# keyframe_path against the refined trajectory: local BA may still move a keyframe after the last
+# path message (published at the last keyframe) [m, and rotation matrix entries]
+KEYFRAME_PATH_TOLERANCE = 0.01
 # The camera mount: the default (DefaultBaseFromOptical), as the test plays no TF; the map frame
 # is the base frame at the first frame, whose optical frame is the saved trajectory's world.
 T_BASE_OPTICAL = np.array([[0, 0, 1, 0], [-1, 0, 0, 0], [0, -1, 0, 0], [0, 0, 0, 1]], float)
@@ -57,12 +64,13 @@ class OdometryBagTest(unittest.TestCase):
         rec = Recorder()
         topics = [("odom", Odometry), ("static_points", PointCloud2),
                   ("dynamic_points", PointCloud2), ("graph_edges", MarkerArray),
-                  ("status", FrameStatus), ("static_map", PointCloud2)]
+                  ("status", FrameStatus), ("static_map", PointCloud2),
+                  ("keyframe_path", Path), ("loop_edges", MarkerArray)]
         subs = [rec.subscribe("/dslam/" + t, c, t) for t, c in topics]
         subs.append(rec.subscribe("/tf", TFMessage, "tf"))
         play_bag(bag)
         for name in ["odom", "static_points", "dynamic_points", "graph_edges", "status", "tf",
-                     "static_map"]:
+                     "static_map", "keyframe_path", "loop_edges"]:
             self.assertGreater(rec.count(name), 0, "nothing received on " + name)
         status = rec.last("status")
         self.assertEqual(status.frames_received, FRAMES)
@@ -84,6 +92,8 @@ class OdometryBagTest(unittest.TestCase):
         if expect_backend:
             self.check_backend(statuses)
         self.check_map_odom(rec, out, expect_backend)
+        refined = self.check_refined_trajectory(folder, work, out)
+        self.check_keyframe_outputs(rec, refined, expect_backend)
         for name in ["static_points", "dynamic_points"]:
             self.assertTrue(all(m.header.frame_id == "map" for m in rec.messages(name)), name)
         self.assertTrue(all(marker.header.frame_id == "map"
@@ -118,6 +128,59 @@ class OdometryBagTest(unittest.TestCase):
             self.assertLess(identity, len(map_odom), "no correction reached map -> odom")
         else:
             self.assertEqual(identity, len(map_odom))
+
+    def check_refined_trajectory(self, folder, work, causal):
+        """save_refined_trajectory: the frames of `causal` (save_trajectory's file, one segment),
+        refined, near the ground truth; an unwritable path is refused. Returns the file's rows."""
+        save = rospy.ServiceProxy("/dslam/save_refined_trajectory", SaveTrajectory)
+        path = os.path.join(work, "refined.txt")
+        result = save(path)
+        self.assertTrue(result.success, result.message)
+        rows = np.loadtxt(path, comments="#", ndmin=2)
+        self.assertEqual(rows.shape, (result.poses, 8))
+        causal_rows = np.loadtxt(causal, comments="#", ndmin=2)
+        np.testing.assert_array_equal(rows[:, 0], causal_rows[:, 0])  # the same frames
+        ate_m = traj.evaluate(os.path.join(folder, "groundtruth.txt"), path)["metrics"]["ate_rmse_m"]
+        rospy.loginfo("odometry_bag_check: refined trajectory %d poses, ATE %.4f m",
+                      result.poses, ate_m)
+        self.assertLess(ate_m, ATE_TOLERANCE_M)
+        bad = save("/nonexistent/folder/refined.txt")
+        self.assertFalse(bad.success)
+        self.assertIn("/nonexistent/folder/refined.txt", bad.message)
+        return rows
+
+    def check_keyframe_outputs(self, rec, refined, expect_backend):
+        """The last keyframe_path: the map frame, stamps increasing, each keyframe's base pose
+        where the refined trajectory puts it (within what local BA may move a keyframe after the
+        last path message); loop_edges in the map frame without lines; the status's loop fields."""
+        path = rec.last("keyframe_path")
+        self.assertEqual(path.header.frame_id, "map")
+        stamps = [p.header.stamp.to_sec() for p in path.poses]
+        self.assertGreater(len(stamps), 1)
+        self.assertEqual(stamps, sorted(stamps))
+        self.assertLessEqual(len(stamps), sum(s.keyframe for s in rec.messages("status")))
+        worst = 0.0
+        for pose in path.poses:
+            row = refined[np.argmin(np.abs(refined[:, 0] - pose.header.stamp.to_sec()))]
+            self.assertAlmostEqual(row[0], pose.header.stamp.to_sec(), places=5)
+            expected = T_BASE_OPTICAL @ tum_matrix(row) @ np.linalg.inv(T_BASE_OPTICAL)
+            got = matrix(pose.pose.position, pose.pose.orientation)
+            worst = max(worst, np.abs(got - expected).max())
+        rospy.loginfo("odometry_bag_check: keyframe_path %d keyframes, %.2g from the refined "
+                      "trajectory at most", len(stamps), worst)
+        self.assertLess(worst, KEYFRAME_PATH_TOLERANCE)
+        for array in rec.messages("loop_edges"):
+            for marker in array.markers:
+                self.assertEqual(marker.header.frame_id, "map")
+                self.assertEqual(marker.ns, "loops")
+                self.assertEqual(marker.points, [])
+        status = rec.last("status")
+        self.assertEqual(status.loop_closures, 0)  # loop_closing.min_frames_apart: 150 frames
+        if expect_backend:
+            self.assertGreater(status.loop_keyframes, 0)
+            self.assertTrue(any(s.loop_ms > 0.0 for s in rec.messages("status")))
+        else:
+            self.assertEqual((status.loop_keyframes, status.loop_ms), (0, 0.0))
 
     def check_static_map(self, rec, work):
         """The last static_map message, a late subscriber's latched copy and save_map's file."""

@@ -4,7 +4,7 @@ message), checking the documented behaviour of each robustness case (docs/ros-in
 conventions"): skipped sets reported as `rejected`, the reset service keeping the odometry
 continuous (and map -> odom), time going backwards starting a new trajectory segment and odom at
 the origin, warnings for frame ids, gaps and a missing camera_info, the streamed and saved
-segment files, the bounded path, and an invalid parameter stopping dslam_odometry_node."""
+segment files, the refined trajectory of the current segment alone, the bounded path, and an invalid parameter stopping dslam_odometry_node."""
 
 import os
 import subprocess
@@ -206,6 +206,22 @@ class RobustnessTest(unittest.TestCase):
                                  STREAM.replace(".txt", ".seg1.txt"))]:
             with open(saved) as a, open(streamed) as b:
                 self.assertEqual(a.read(), b.read())
+        self.check_refined_segment(work, current)
+
+    def check_refined_segment(self, work, current):
+        """save_refined_trajectory writes the current segment alone (time went backwards at
+        frame 41): the frames of save_trajectory's current file; the back end is off, so the
+        poses are the tracked ones up to the files' decimals."""
+        out = os.path.join(work, "refined.txt")
+        reply = rospy.ServiceProxy("/dslam/save_refined_trajectory", SaveTrajectory)(out)
+        self.assertTrue(reply.success, reply.message)
+        stamps, positions = traj.read_tum_positions(out)
+        self.assertEqual(reply.poses, len(stamps))
+        self.assertEqual(list(stamps), list(current[0]))
+        worst = abs(positions - current[1]).max()
+        rospy.loginfo("robustness_check: refined segment %d poses, %.2g m from the tracked ones",
+                      len(stamps), worst)
+        self.assertLess(worst, 1e-5)
 
     def check_missing_camera_info(self, seq, node):
         colour, depth, _ = seq.messages(0, 5000.0)

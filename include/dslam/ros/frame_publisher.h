@@ -16,6 +16,7 @@
 
 #include "dslam/FrameStatus.h"
 #include "dslam/core/rgbd_frame.h"
+#include "dslam/ros/keyframe_map_outputs.h"
 #include "dslam/ros/node_config.h"
 #include "dslam/ros/odom_integrator.h"
 #include "dslam/tracking/frame_result.h"
@@ -36,8 +37,12 @@ struct FrameCounters {
 /// (test/ros/status_message_test.cpp checks every pair).
 void FillBackEndStatus(const BackEndStatus& backend, dslam::FrameStatus* status);
 
-/// Where the data of the tracker's world (clouds, graph markers, moving objects, static map, path)
-/// is published for one frame.
+/// Sets loop closing's fields of a FrameStatus message from `loops`, each to the message field of
+/// its name (test/ros/status_message_test.cpp checks them).
+void FillLoopStatus(const LoopStatus& loops, dslam::FrameStatus* status);
+
+/// Where the data of the tracker's world (clouds, graph markers, moving objects, static map, path,
+/// keyframe path, loop edges) is published for one frame.
 struct WorldDataFrame {
   std::string frame_id;  ///< WorldDataFrameId(config): map_frame or odom_frame
   /// [m] Maps points of the tracker's world (the first frame's optical frame) into frame_id:
@@ -63,6 +68,9 @@ class FramePublisher {
   /// stamp): state "rejected", no pose, `problem` as the message.
   void PublishRejected(const std::string& problem, const std_msgs::Header& header,
                        const FrameCounters& counters, double latency_ms);
+
+  /// Loop closing's status, reported by every status message from now on.
+  void SetLoopStatus(const LoopStatus& loops) { loops_ = loops; }
 
   /// The odometry started a new run at the origin (time went backwards): empties the path and
   /// restarts odom and map -> odom at the identity.
@@ -102,6 +110,7 @@ class FramePublisher {
   OdomIntegrator odom_;                          ///< the continuous odom pose and map -> odom
   std::deque<geometry_msgs::PoseStamped> path_;  ///< at most path_max_poses, oldest first
   ros::WallTime path_published_;                 ///< last publication of the path
+  LoopStatus loops_;                             ///< SetLoopStatus
 };
 
 }  // namespace ros_layer

@@ -4,17 +4,23 @@
 // dslam::Slam on a worker thread fed by a two-frame bounded queue (it absorbs the bursts of the
 // ApproximateTime synchronizer): the front end there, the back end on Slam's own thread
 // (~backend_threads, the default) or after each keyframe on the worker; and publishes through
-// FramePublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory` (dslam/SaveTrajectory).
+// FramePublisher, the keyframe map's outputs (corrected keyframe path, loop edges, loop status)
+// through KeyFrameMapPublisher. Services: `reset` (std_srvs/Trigger), `save_trajectory` and
+// `save_refined_trajectory` (dslam/SaveTrajectory).
 // With map.enabled, a StaticMapper receives Slam's keyframes (on the back-end thread, or on the
 // worker with ~backend_threads false) and StaticMapPublisher serves `static_map` and `save_map`.
 // ObjectsPublisher tracks the moving objects on a thread of its own (the worker with
 // ~backend_threads false).
 //
 // Threads and locks: the subscriber callbacks only queue input sets (LatestSlot) and count
-// arrivals (watchdog_mutex_); the worker thread alone uses slam_, publisher_, stamps_ and the
-// camera mount; the service callbacks set reset_requested_ (atomic, acted on by the worker before
-// its next frame) or take a snapshot of recorder_ under trajectory_mutex_ and write the files after
-// releasing it. The worker holds trajectory_mutex_ only to append a pose or start a segment.
+// arrivals (watchdog_mutex_); the worker thread alone uses slam_ (but for RefinedPoses, below),
+// publisher_, keyframe_map_publisher_, stamps_ and the camera mount; the service callbacks set
+// reset_requested_ (atomic, acted on by the worker before its next frame) or take a snapshot of
+// recorder_ under trajectory_mutex_ and write the files after releasing it.
+// `save_refined_trajectory` reads the current segment's first stamp under trajectory_mutex_,
+// releases it, then takes Slam::RefinedPoses (the map lock; Slam's getters are for any thread) and
+// writes the file holding neither. The worker holds trajectory_mutex_ only to append a pose or
+// start a segment, and takes no lock around Slam's calls.
 
 #include <atomic>
 #include <memory>
@@ -42,14 +48,13 @@
 #include "dslam/io/trajectory_recorder.h"
 #include "dslam/ros/frame_publisher.h"
 #include "dslam/ros/input_checks.h"
+#include "dslam/ros/keyframe_map_publisher.h"
 #include "dslam/ros/latest_slot.h"
 #include "dslam/ros/node_config.h"
 #include "dslam/ros/objects_publisher.h"
 #include "dslam/ros/static_map_publisher.h"
 
 namespace dslam {
-
-class LoopClosing;  // dslam/loop_closing/loop_closing.h
 
 namespace ros_layer {
 
@@ -98,18 +103,24 @@ class OdometryNodelet : public nodelet::Nodelet {
   const Eigen::Isometry3d& CameraMount(const std::string& camera_frame, const ros::Time& stamp);
   bool OnReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   bool OnSaveTrajectory(dslam::SaveTrajectory::Request& req, dslam::SaveTrajectory::Response& res);
+  /// Writes the current segment of Slam::RefinedPoses (keyframe_map_outputs.h, CurrentSegment)
+  /// in TUM format; success false and the error as message when the file cannot be written.
+  bool OnSaveRefinedTrajectory(dslam::SaveTrajectory::Request& req,
+                               dslam::SaveTrajectory::Response& res);
 
   NodeConfig config_;
-  // Front end and back end; used by the worker thread only (in threaded mode Slam also runs its
-  // own back-end thread, stopped and joined when slam_ is destroyed, after worker_).
+  // Front end and back end; used by the worker thread, and by save_refined_trajectory for the
+  // getter RefinedPoses (in threaded mode Slam also runs its own back-end thread, stopped and
+  // joined when slam_ is destroyed, after worker_ and the services).
   std::unique_ptr<Slam> slam_;
-  std::unique_ptr<FramePublisher> publisher_;            // used by the worker only
-  std::unique_ptr<ObjectsPublisher> objects_publisher_;  // used by the worker only
-  std::shared_ptr<StaticMapper> mapper_;                 // null unless map.enabled (own lock)
+  std::unique_ptr<FramePublisher> publisher_;                     // used by the worker only
+  std::unique_ptr<ObjectsPublisher> objects_publisher_;           // used by the worker only
+  std::unique_ptr<KeyFrameMapPublisher> keyframe_map_publisher_;  // used by the worker only
+  std::shared_ptr<StaticMapper> mapper_;  // null unless map.enabled (own lock)
   // null unless backend.enabled and loop_closing.enabled (own lock; loop_closing.h)
   std::shared_ptr<LoopClosing> loop_closing_;
-  std::unique_ptr<StaticMapPublisher> map_publisher_;    // timer and service (own lock)
-  std::unique_ptr<StampCheck> stamps_;                   // used by the worker only
+  std::unique_ptr<StaticMapPublisher> map_publisher_;  // timer and service (own lock)
+  std::unique_ptr<StampCheck> stamps_;                 // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;
 
@@ -122,7 +133,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::unique_ptr<InfoSub> info_sub_;
   std::unique_ptr<message_filters::Synchronizer<Approximate>> approximate_sync_;
   std::unique_ptr<message_filters::Synchronizer<Exact>> exact_sync_;
-  ros::ServiceServer reset_srv_, save_srv_;
+  ros::ServiceServer reset_srv_, save_srv_, save_refined_srv_;
   ros::WallTimer watchdog_timer_;
 
   std::mutex watchdog_mutex_;
@@ -135,6 +146,8 @@ class OdometryNodelet : public nodelet::Nodelet {
 
   std::mutex trajectory_mutex_;
   std::unique_ptr<TrajectoryRecorder> recorder_;  // every tracked pose, guarded
+  /// [s] stamp of the current segment's first tracked frame (none yet: empty), guarded
+  std::optional<double> segment_first_stamp_s_;
 };
 
 }  // namespace ros_layer
