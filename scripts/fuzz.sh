@@ -6,6 +6,7 @@
 #
 # Usage: scripts/fuzz.sh [TARGET...]          # default: every target
 #   targets: camera_yaml config_yaml tum_dataset trajectory depth_conversion ros_conversions
+#            keyframe_map
 # Environment:
 #   DSLAM_FUZZ_RUNS     executions per target (2000000)
 #   DSLAM_FUZZ_MAX_LEN  largest input [bytes] (4096)
