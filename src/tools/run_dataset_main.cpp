@@ -3,7 +3,8 @@
 // TUM-layout folder, optionally at a fixed frame rate, and writes the trajectory (every tracked
 // frame's pose as estimated at that frame, TUM format, camera optical frame), a per-frame status
 // CSV and a summary. On synthetic folders (mask.txt present) it also scores the labels. Options:
-// run_dataset_args.h; moving objects: objects_output.h; static maps: map_output.h.
+// run_dataset_args.h; moving objects: objects_output.h; static maps: map_output.h; the keyframe
+// map file: keyframe_map_output.h.
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,6 +29,7 @@
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "keyframe_map_output.h"
 #include "loop_output.h"
 #include "map_output.h"
 #include "objects_output.h"
@@ -247,16 +249,20 @@ int Run(const Args& args) {
   dslam::tools::LoopOutput loops(config, args.vocabulary);
   std::vector<std::shared_ptr<dslam::KeyFrameObserver>> observers = maps.Observers();
   for (auto& observer : loops.Observers()) observers.push_back(observer);
+  dslam::tools::KeyFrameMapOutput keyframe_map(args.save_keyframe_map, args.vocabulary);
+  for (auto& observer : keyframe_map.Observers()) observers.push_back(observer);
   dslam::Slam slam(config,
                    args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous,
                    dslam::RefinedPoseRecording::kOn, observers);
   loops.Attach(&slam);
+  keyframe_map.Attach(&slam);
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
   if (out.objects) out.objects->Close();
   maps.Write();
   loops.Write(args.loops);
+  keyframe_map.Save(slam, *dataset.camera_yaml().camera);
   dslam::WriteTumTrajectory(args.trajectory, out.trajectory);
   if (!args.refined_trajectory.empty()) {
     dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
@@ -269,6 +275,7 @@ int Run(const Args& args) {
   }
   maps.Print();
   loops.Print();
+  keyframe_map.Print();
   if (!args.summary.empty()) {
     dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
     maps.AddTo(&json);
