@@ -34,6 +34,7 @@
 #include "map_output.h"
 #include "objects_output.h"
 #include "run_dataset_args.h"
+#include "run_progress.h"
 
 namespace {
 
@@ -47,49 +48,6 @@ std::map<double, std::string> ReadMasks(const std::string& folder) {
   for (const auto& f : dslam::ReadFileList(folder + "/mask.txt")) masks[f.stamp_s] = f.path;
   return masks;
 }
-
-// A bar redrawn in place on a terminal; one line per 10% otherwise (logs stay readable).
-void Progress(size_t done, size_t total, const dslam::FrameResult& r) {
-  static const bool terminal = isatty(fileno(stderr));
-  if (!terminal) {
-    if (done * 10 / total != (done - 1) * 10 / total || done == total) {
-      std::fprintf(stderr, "%3zu%% %zu/%zu frames\n", done * 100 / total, done, total);
-    }
-    return;
-  }
-  const int width = 30;
-  const int filled = static_cast<int>(width * done / total);
-  std::fprintf(stderr, "\r[%s%s] %zu/%zu %-11s %5.1f ms", std::string(filled, '#').c_str(),
-               std::string(width - filled, ' ').c_str(), done, total, ToString(r.state),
-               r.times.total_ms);
-}
-
-// Prints the frames that carry a message (lost, reset, re-initialised, relocalised) to stderr,
-// once per run of frames with the same message, e.g.
-// "frame 1 (1305031229.564): lost: too few pose inliers".
-class FrameMessages {
- public:
-  void Add(const dslam::FrameResult& r) {
-    if (r.message == last_) {
-      repeats_ += !r.message.empty();
-      return;
-    }
-    Flush();
-    last_ = r.message;
-    if (last_.empty()) return;
-    static const bool terminal = isatty(fileno(stderr));
-    std::fprintf(stderr, "%sframe %d (%.3f): %s: %s\n", terminal ? "\n" : "", r.frame_index,
-                 r.stamp_s, ToString(r.state), r.message.c_str());
-  }
-  void Flush() {
-    if (repeats_ > 0) std::fprintf(stderr, "  and %d more frames with that message\n", repeats_);
-    repeats_ = 0;
-  }
-
- private:
-  std::string last_;
-  int repeats_ = 0;
-};
 
 // One frame's confusion counts (--segmentation).
 void WriteSegmentationRow(int frame, const dslam::SegmentationScore& s, std::ofstream* out) {
@@ -187,7 +145,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
   const size_t n =
       args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
   const auto start = std::chrono::steady_clock::now();
-  FrameMessages messages;
+  dslam::tools::FrameMessages messages;
   for (size_t i = 0; i < n; ++i) {
     const dslam::RgbdFrame frame = dataset.LoadFrame(i);
     if (args.rate_hz > 0.0) {
@@ -200,7 +158,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
     Record(args, r, out);
     if (!args.quiet) {
       messages.Add(r);
-      Progress(i + 1, n, r);
+      dslam::tools::Progress(i + 1, n, r);
     }
   }
   messages.Flush();
