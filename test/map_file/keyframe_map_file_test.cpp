@@ -122,6 +122,14 @@ TEST(KeyFrameMapFile, FailedSaveLeavesTheOldFile) {
   const std::string message = test::ThrownMessage<std::runtime_error>(
       [&] { SaveKeyFrameMap(folder, SampleMapFile(2, 1, false)); });
   EXPECT_NE(message.find(folder), std::string::npos) << message;
+  // The temporary file cannot be made (a folder of its name): map.bin stays as it was.
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  std::filesystem::create_directories(temporary + "/inside");
+  const std::string cannot_write = test::ThrownMessage<std::runtime_error>(
+      [&] { SaveKeyFrameMap(path, SampleMapFile(5, 3, true)); });
+  EXPECT_EQ(cannot_write, "SaveKeyFrameMap: cannot write " + temporary);
+  EXPECT_EQ(ReadWholeFile(path, "test"), old_bytes);
+  std::filesystem::remove_all(temporary);
   // A folder that cannot be written (not for root, which may write anyway): map.bin stays.
   if (::geteuid() != 0) {
     ::chmod(dir.c_str(), 0500);
