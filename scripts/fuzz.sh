@@ -2,10 +2,12 @@
 # Builds dslam's libFuzzer targets (test/fuzz/, one harness per file) with clang++
 # -fsanitize=fuzzer,address,undefined in build/fuzz and runs each for a number of executions,
 # one target after the other (one job each). Not part of scripts/test.sh; the normal build
-# replays the stored inputs through the same harnesses (test_io, test_ros: FuzzReplay.*).
+# replays the stored inputs through the same harnesses (test_io, test_ros, test_map_file:
+# FuzzReplay.*).
 #
 # Usage: scripts/fuzz.sh [TARGET...]          # default: every target
 #   targets: camera_yaml config_yaml tum_dataset trajectory depth_conversion ros_conversions
+#            keyframe_map
 # Environment:
 #   DSLAM_FUZZ_RUNS     executions per target (2000000)
 #   DSLAM_FUZZ_MAX_LEN  largest input [bytes] (4096)

@@ -22,8 +22,18 @@ void CheckImageSize(int64_t width, int64_t height, const std::string& what) {
   }
 }
 
-void CheckImageFile(const std::string& path, bool allow_jpeg) {
+std::optional<std::array<int64_t, 2>> PngHeaderSize(const unsigned char* data, std::size_t size) {
   // Signature (8 bytes), IHDR length and type (8 bytes), width and height (big-endian uint32).
+  const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 24 || std::memcmp(data, kPng, sizeof(kPng)) != 0) return std::nullopt;
+  const auto be32 = [&](int at) {
+    return (int64_t{data[at]} << 24) | (int64_t{data[at + 1]} << 16) |
+           (int64_t{data[at + 2]} << 8) | int64_t{data[at + 3]};
+  };
+  return std::array<int64_t, 2>{be32(16), be32(20)};
+}
+
+void CheckImageFile(const std::string& path, bool allow_jpeg) {
   std::array<unsigned char, 24> header{};
   std::ifstream in(path, std::ios::binary);
   if (!in) return;
@@ -36,13 +46,10 @@ void CheckImageFile(const std::string& path, bool allow_jpeg) {
   if (std::memcmp(header.data(), kPng, sizeof(kPng)) != 0) {
     throw std::runtime_error(path + ": not a PNG" + (allow_jpeg ? " or JPEG" : "") + " file");
   }
-  if (read < static_cast<std::streamsize>(header.size())) return;
-  const auto be32 = [&](int at) {
-    return (int64_t{header[at]} << 24) | (int64_t{header[at + 1]} << 16) |
-           (int64_t{header[at + 2]} << 8) | int64_t{header[at + 3]};
-  };
+  const auto size = PngHeaderSize(header.data(), static_cast<std::size_t>(read));
+  if (!size) return;
   try {
-    CheckImageSize(be32(16), be32(20), "PNG header");
+    CheckImageSize((*size)[0], (*size)[1], "PNG header");
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": " + e.what());
   }

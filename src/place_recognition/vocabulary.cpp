@@ -1,7 +1,6 @@
 #include "dslam/place_recognition/vocabulary.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <stdexcept>
 
 #include "vocabulary_tree.h"
@@ -56,12 +55,6 @@ std::uint64_t Vocabulary::identity() const { return empty() ? 0 : tree_->identit
 double Vocabulary::WordWeight(WordId word) const {
   if (word >= num_words()) throw std::out_of_range("Vocabulary::WordWeight: no such word");
   return tree_->weight[tree_->node_of_word[word]];
-}
-
-std::string FormatIdentity(std::uint64_t identity) {
-  char text[17];
-  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(identity));
-  return text;
 }
 
 }  // namespace dslam

@@ -1,13 +1,9 @@
 // The vocabulary file (format in vocabulary.h): Save, Load, the body and its FNV-1a identity.
 
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
-#include <unistd.h>
-
+#include "dslam/core/binary_io.h"
 #include "dslam/place_recognition/vocabulary.h"
 #include "vocabulary_tree.h"
 
@@ -18,22 +14,6 @@ constexpr char kMagic[8] = {'D', 'S', 'L', 'A', 'M', 'V', 'O', 'C'};
 constexpr size_t kHeaderBytes = 20;  // magic, version, identity
 constexpr size_t kParamBytes = 20;   // k, L, descriptor bytes, nodes, words
 constexpr size_t kNodeBytes = 4 + 8 + Vocabulary::kDescriptorBytes;
-
-void PutU32(std::uint32_t v, std::string* out) {
-  for (int i = 0; i < 4; ++i) out->push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
-}
-
-void PutU64(std::uint64_t v, std::string* out) {
-  for (int i = 0; i < 8; ++i) out->push_back(static_cast<char>((v >> (8 * i)) & 0xFFu));
-}
-
-std::uint64_t GetLittleEndian(const std::string& bytes, size_t offset, int size) {
-  std::uint64_t v = 0;
-  for (int i = 0; i < size; ++i) {
-    v |= static_cast<std::uint64_t>(static_cast<std::uint8_t>(bytes[offset + i])) << (8 * i);
-  }
-  return v;
-}
 
 [[noreturn]] void Fail(const std::string& path, const std::string& reason) {
   throw std::runtime_error("Vocabulary::Load: " + path + ": " + reason);
@@ -47,29 +27,11 @@ void ParseNodes(const std::string& bytes, size_t num_nodes, VocabularyTree* tree
     std::memcpy(d.data(), bytes.data() + at + 12, d.size());
     const std::uint32_t node =
         tree->AddNode(static_cast<std::uint32_t>(GetLittleEndian(bytes, at, 4)), d);
-    const std::uint64_t weight_bits = GetLittleEndian(bytes, at + 4, 8);
-    std::memcpy(&tree->weight[node], &weight_bits, sizeof(double));
+    tree->weight[node] = GetF64(bytes, at + 4);
   }
-}
-
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, "cannot open the file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) Fail(path, "read error");
-  return bytes;
 }
 
 }  // namespace
-
-std::uint64_t Fnv1a64(const char* data, std::size_t size) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= static_cast<std::uint8_t>(data[i]);
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
 
 std::string SerialiseBody(const VocabularyTree& tree) {
   std::string out;
@@ -81,9 +43,7 @@ std::string SerialiseBody(const VocabularyTree& tree) {
   PutU32(static_cast<std::uint32_t>(tree.node_of_word.size()), &out);
   for (size_t i = 0; i < tree.parent.size(); ++i) {
     PutU32(tree.parent[i], &out);
-    std::uint64_t weight_bits = 0;
-    std::memcpy(&weight_bits, &tree.weight[i], sizeof(double));
-    PutU64(weight_bits, &out);
+    PutF64(tree.weight[i], &out);
     out.append(reinterpret_cast<const char*>(tree.descriptor[i].data()), tree.descriptor[i].size());
   }
   return out;
@@ -95,27 +55,11 @@ void Vocabulary::Save(const std::string& path) const {
   PutU32(kFormatVersion, &bytes);
   PutU64(tree_->identity, &bytes);
   bytes += SerialiseBody(*tree_);
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::filesystem::remove(temporary);
-      throw std::runtime_error("Vocabulary::Save: cannot write " + temporary);
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary);
-    throw std::runtime_error("Vocabulary::Save: cannot rename " + temporary + " to " + path + ": " +
-                             error.message());
-  }
+  WriteFileAtomically(path, bytes, "Vocabulary::Save");
 }
 
 Vocabulary Vocabulary::Load(const std::string& path) {
-  const std::string bytes = ReadAll(path);
+  const std::string bytes = ReadWholeFile(path, "Vocabulary::Load");
   if (bytes.size() < sizeof(kMagic)) Fail(path, "truncated: shorter than the magic string");
   if (std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
     Fail(path, "wrong magic: not a dslam vocabulary file");

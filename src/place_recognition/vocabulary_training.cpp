@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "dslam/core/binary_io.h"
 #include "dslam/place_recognition/vocabulary.h"
 #include "kmajority.h"
 #include "vocabulary_tree.h"

@@ -42,9 +42,6 @@ struct VocabularyTree {
 /// The file's bytes from offset 20 to the end (vocabulary.h): parameters and nodes.
 std::string SerialiseBody(const VocabularyTree& tree);
 
-/// 64-bit FNV-1a hash of `size` bytes at `data`.
-std::uint64_t Fnv1a64(const char* data, std::size_t size);
-
 /// The word of one descriptor, and in `feature_node` (when not null) its node at depth
 /// `feature_depth` on the way down (its word's node when that is shallower).
 std::uint32_t Descend(const VocabularyTree& tree, const std::uint8_t* d, int feature_depth,

@@ -16,7 +16,8 @@ int Usage() {
                "                         [--objects OUT.txt] [--map OUT.pcd] "
                "[--map-unmasked OUT.pcd]\n"
                "                         [--loop-closing on|off] [--loops OUT.txt] "
-               "[--vocabulary FILE]\n";
+               "[--vocabulary FILE]\n"
+               "                         [--save-keyframe-map OUT.bin]\n";
   return 2;
 }
 
@@ -69,6 +70,8 @@ bool Parse(int argc, char** argv, RunDatasetArgs* args) {
       args->loops = value;
     else if (key == "--vocabulary")
       args->vocabulary = value;
+    else if (key == "--save-keyframe-map")
+      args->save_keyframe_map = value;
     else
       return false;
   }

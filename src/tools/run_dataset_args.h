@@ -1,6 +1,6 @@
 #pragma once
-// dslam_run_dataset's command line: the options, their parsing and the usage text (docs/tools-and-data.md's
-// option table describes each).
+// dslam_run_dataset's command line: the options, their parsing and the usage text
+// (docs/tools-and-data.md's option table describes each).
 
 #include <string>
 
@@ -28,9 +28,11 @@ struct RunDatasetArgs {
   std::string loop_closing;
   std::string loops;       ///< --loops: accepted loops, one per line (io/loop_io.h)
   std::string vocabulary;  ///< --vocabulary: vocabulary file; empty: the committed one
-  int max_frames = -1;        ///< --max-frames: process only the first N frames; -1: all
-  bool quiet = false;         ///< --quiet: no progress bar
-  bool threads = false;       ///< --threads: the back end on its own thread (kThreaded)
+  /// --save-keyframe-map: the final keyframe map file (keyframe_map_output.h)
+  std::string save_keyframe_map;
+  int max_frames = -1;   ///< --max-frames: process only the first N frames; -1: all
+  bool quiet = false;    ///< --quiet: no progress bar
+  bool threads = false;  ///< --threads: the back end on its own thread (kThreaded)
   /// [Hz] --rate: frame i is handed over no earlier than start + i / rate_hz; 0: at once.
   double rate_hz = 0.0;
 };

@@ -3,7 +3,8 @@
 // TUM-layout folder, optionally at a fixed frame rate, and writes the trajectory (every tracked
 // frame's pose as estimated at that frame, TUM format, camera optical frame), a per-frame status
 // CSV and a summary. On synthetic folders (mask.txt present) it also scores the labels. Options:
-// run_dataset_args.h; moving objects: objects_output.h; static maps: map_output.h.
+// run_dataset_args.h; moving objects: objects_output.h; static maps: map_output.h; the keyframe
+// map file: keyframe_map_output.h.
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,10 +29,12 @@
 #include "dslam/io/config_io.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
+#include "keyframe_map_output.h"
 #include "loop_output.h"
 #include "map_output.h"
 #include "objects_output.h"
 #include "run_dataset_args.h"
+#include "run_progress.h"
 
 namespace {
 
@@ -45,49 +48,6 @@ std::map<double, std::string> ReadMasks(const std::string& folder) {
   for (const auto& f : dslam::ReadFileList(folder + "/mask.txt")) masks[f.stamp_s] = f.path;
   return masks;
 }
-
-// A bar redrawn in place on a terminal; one line per 10% otherwise (logs stay readable).
-void Progress(size_t done, size_t total, const dslam::FrameResult& r) {
-  static const bool terminal = isatty(fileno(stderr));
-  if (!terminal) {
-    if (done * 10 / total != (done - 1) * 10 / total || done == total) {
-      std::fprintf(stderr, "%3zu%% %zu/%zu frames\n", done * 100 / total, done, total);
-    }
-    return;
-  }
-  const int width = 30;
-  const int filled = static_cast<int>(width * done / total);
-  std::fprintf(stderr, "\r[%s%s] %zu/%zu %-11s %5.1f ms", std::string(filled, '#').c_str(),
-               std::string(width - filled, ' ').c_str(), done, total, ToString(r.state),
-               r.times.total_ms);
-}
-
-// Prints the frames that carry a message (lost, reset, re-initialised, relocalised) to stderr,
-// once per run of frames with the same message, e.g.
-// "frame 1 (1305031229.564): lost: too few pose inliers".
-class FrameMessages {
- public:
-  void Add(const dslam::FrameResult& r) {
-    if (r.message == last_) {
-      repeats_ += !r.message.empty();
-      return;
-    }
-    Flush();
-    last_ = r.message;
-    if (last_.empty()) return;
-    static const bool terminal = isatty(fileno(stderr));
-    std::fprintf(stderr, "%sframe %d (%.3f): %s: %s\n", terminal ? "\n" : "", r.frame_index,
-                 r.stamp_s, ToString(r.state), r.message.c_str());
-  }
-  void Flush() {
-    if (repeats_ > 0) std::fprintf(stderr, "  and %d more frames with that message\n", repeats_);
-    repeats_ = 0;
-  }
-
- private:
-  std::string last_;
-  int repeats_ = 0;
-};
 
 // One frame's confusion counts (--segmentation).
 void WriteSegmentationRow(int frame, const dslam::SegmentationScore& s, std::ofstream* out) {
@@ -185,7 +145,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
   const size_t n =
       args.max_frames < 0 ? dataset.size() : std::min<size_t>(dataset.size(), args.max_frames);
   const auto start = std::chrono::steady_clock::now();
-  FrameMessages messages;
+  dslam::tools::FrameMessages messages;
   for (size_t i = 0; i < n; ++i) {
     const dslam::RgbdFrame frame = dataset.LoadFrame(i);
     if (args.rate_hz > 0.0) {
@@ -198,7 +158,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
     Record(args, r, out);
     if (!args.quiet) {
       messages.Add(r);
-      Progress(i + 1, n, r);
+      dslam::tools::Progress(i + 1, n, r);
     }
   }
   messages.Flush();
@@ -247,16 +207,20 @@ int Run(const Args& args) {
   dslam::tools::LoopOutput loops(config, args.vocabulary);
   std::vector<std::shared_ptr<dslam::KeyFrameObserver>> observers = maps.Observers();
   for (auto& observer : loops.Observers()) observers.push_back(observer);
+  dslam::tools::KeyFrameMapOutput keyframe_map(args.save_keyframe_map, args.vocabulary);
+  for (auto& observer : keyframe_map.Observers()) observers.push_back(observer);
   dslam::Slam slam(config,
                    args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous,
                    dslam::RefinedPoseRecording::kOn, observers);
   loops.Attach(&slam);
+  keyframe_map.Attach(&slam);
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
   if (out.objects) out.objects->Close();
   maps.Write();
   loops.Write(args.loops);
+  keyframe_map.Save(slam, *dataset.camera_yaml().camera);
   dslam::WriteTumTrajectory(args.trajectory, out.trajectory);
   if (!args.refined_trajectory.empty()) {
     dslam::WriteTumTrajectory(args.refined_trajectory, slam.RefinedPoses());
@@ -269,6 +233,7 @@ int Run(const Args& args) {
   }
   maps.Print();
   loops.Print();
+  keyframe_map.Print();
   if (!args.summary.empty()) {
     dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
     maps.AddTo(&json);

@@ -27,6 +27,10 @@ void TrajectoryHarness(const std::string& data);
 /// type, rows, cols, the scale's 8 bytes, then the pixel bytes (or the PNG file's bytes).
 void DepthConversionHarness(const std::string& data);
 
+/// Keyframe map file bytes -> ParseKeyFrameMap, as they are and with the header's size and
+/// checksum made right (keyframe_map_seal.h).
+void KeyFrameMapHarness(const std::string& data);
+
 /// ROS layer: a mode byte (colour image, depth image, camera_info), then the message's fields
 /// (see ros_conversions_fuzz.cpp).
 void RosConversionsHarness(const std::string& data);

@@ -1,12 +1,13 @@
 """Tests of dslam_run_dataset's command line: the back end's execution mode (--threads), the
 fixed feeding rate (--rate) and what the summary JSON and status CSV report about them, on a
 short synthetic sequence rendered by dslam_synth; the moving objects (--objects) on their own
-thread with --threads, on a short walking sequence."""
+thread with --threads, on a short walking sequence; the keyframe map file (--save-keyframe-map)."""
 
 import csv
 import json
 import os
 import shutil
+import struct
 import subprocess
 import tempfile
 import time
@@ -14,6 +15,15 @@ import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 FRAMES = 30
+COMMITTED_VOCABULARY = 0x723a8e39b1688a18  # data/vocabulary/orb_vocabulary.bin
+
+
+def fnv1a64(data):
+    """64-bit FNV-1a of `data` (dslam/core/binary_io.h)."""
+    value = 14695981039346656037
+    for byte in data:
+        value = ((value ^ byte) * 1099511628211) % (1 << 64)
+    return value
 
 
 def find_tool(name):
@@ -122,6 +132,30 @@ class RunDatasetCliTest(unittest.TestCase):
         self.assertEqual(thread_summary["object_frames"], len(lines))
         self.assertEqual(sync_summary["object_frames"], len(lines))
         self.assertIn("median_objects_add_ms", thread_summary)
+
+    def test_save_keyframe_map(self):
+        """The header of the keyframe map file (include/dslam/map_file/keyframe_map_file.h):
+        size, checksum, the sequence's camera, the committed vocabulary's identity (loop closing
+        on or off), and images of every keyframe; synchronous and with --threads."""
+        for name, options in (("kfm_sync", ["--loop-closing", "off"]), ("kfm_threads", ["--threads"])):
+            path = os.path.join(self.tmp, name + ".bin")
+            code, summary, _, _ = self.run_tool(name, "--save-keyframe-map", path, *options)
+            self.assertEqual(code, 0, name)
+            with open(path, "rb") as handle:
+                data = handle.read()
+            magic, version, size, checksum = struct.unpack_from("<8sIQQ", data, 0)
+            self.assertEqual((magic, version, size), (b"DSLAMKFM", 1, len(data)), name)
+            self.assertEqual(checksum, fnv1a64(data[28:]), name)
+            width, height = struct.unpack_from("<II", data, 28)
+            with open(os.path.join(self.sequence, "camera.yaml")) as handle:
+                camera = dict(line.split(":", 1) for line in handle if ":" in line)
+            self.assertEqual((width, height), (int(camera["width"]), int(camera["height"])))
+            identity, points, keyframes, images = struct.unpack_from("<QIII", data, 108)
+            self.assertEqual(identity, COMMITTED_VOCABULARY, name)
+            self.assertGreater(points, 100, name)
+            self.assertGreater(keyframes, 1, name)
+            self.assertEqual(images, keyframes, name)  # the map keeps every keyframe of 30 frames
+            self.assertFalse([f for f in os.listdir(self.tmp) if ".tmp-" in f])
 
     def test_bad_rate_is_a_usage_error(self):
         for value in ["0", "-5", "fast"]:

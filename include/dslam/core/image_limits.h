@@ -2,7 +2,10 @@
 // Bounds on the image sizes dslam accepts from files and messages (camera.yaml, camera_info,
 // ROS images, depth PNGs), checked before anything of that size is allocated.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace dslam {
@@ -17,6 +20,11 @@ constexpr int64_t kMaxImagePixels = int64_t{1} << 25;
 /// Throws std::invalid_argument naming `what` when `width` or `height` [px] is below 1 or above
 /// kMaxImageSidePx, or width * height is above kMaxImagePixels.
 void CheckImageSize(int64_t width, int64_t height, const std::string& what);
+
+/// Width and height [px] that a PNG's header (IHDR) declares, from the first `size` bytes at
+/// `data`: nothing when they do not start with the PNG signature or are fewer than 24 (signature,
+/// IHDR length and type, width and height).
+std::optional<std::array<int64_t, 2>> PngHeaderSize(const unsigned char* data, std::size_t size);
 
 /// Checks an image file before OpenCV decodes it: it must start with the PNG signature (or,
 /// with `allow_jpeg`, the JPEG one), and a PNG's header (IHDR) must declare a size that passes

@@ -27,6 +27,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "dslam/core/binary_io.h"  // FormatIdentity, how tools print identity()
 #include "dslam/place_recognition/bow_vector.h"
 
 namespace dslam {
@@ -93,9 +94,6 @@ class Vocabulary {
 
   std::shared_ptr<const VocabularyTree> tree_;
 };
-
-/// The identity as 16 lower-case hex digits (how tools print it and docs state it).
-std::string FormatIdentity(std::uint64_t identity);
 
 /// The committed vocabulary, data/vocabulary/orb_vocabulary.bin in the source tree this library
 /// was built from (installed to the package's share folder as data/vocabulary/).
