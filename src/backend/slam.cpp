@@ -194,12 +194,16 @@ void Slam::RethrowBackEndError() {
 }
 
 void Slam::Reset(ResetMode mode) {
-  ResetOdometry(mode, [&] { odometry_.Reset(mode); });
+  ResetOdometry(mode, [&] { odometry_.Reset(mode); }, {});
 }
 
-void Slam::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s) {
-  ResetOdometry(ResetMode::kNewWorld,
-                [&] { odometry_.StartInMap(std::move(map), std::move(places), timeout_s); });
+void Slam::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
+                      std::vector<KeyFrameRecord> loaded) {
+  for (KeyFrameRecord& record : loaded) record.loaded = true;
+  ResetOdometry(
+      ResetMode::kNewWorld,
+      [&] { odometry_.StartInMap(std::move(map), std::move(places), timeout_s); },
+      std::move(loaded));
 }
 
 bool Slam::Localising() const {
@@ -207,12 +211,14 @@ bool Slam::Localising() const {
   return odometry_.localising();
 }
 
-void Slam::ResetOdometry(ResetMode mode, const std::function<void()>& reset) {
+void Slam::ResetOdometry(ResetMode mode, const std::function<void()>& reset,
+                         std::vector<KeyFrameRecord> after_reset) {
   Lock lock(map_mutex_);
   DropBackEndWork();
   reset();
   QueueReset(mode);
   if (observers_.empty()) return;
+  for (KeyFrameRecord& record : after_reset) events_.keyframes.push_back(std::move(record));
   if (mode_ == BackEndMode::kThreaded) {
     work_.notify_one();
     return;

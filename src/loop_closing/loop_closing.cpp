@@ -17,8 +17,12 @@ void LoopClosing::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
   for (const KeyFrameRecord& record : added) {
     const Stopwatch stopwatch;
     if (!detector_ && record.frame.camera) {
-      detector_ = std::make_unique<LoopDetector>(vocabulary_, config_, *record.frame.camera,
-                                                 pose_config_);
+      detector_ =
+          std::make_unique<LoopDetector>(vocabulary_, config_, *record.frame.camera, pose_config_);
+    }
+    if (record.loaded) {
+      AddLoadedKeyFrame(record.id);
+      continue;
     }
     ProcessKeyFrame(record.id);
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -36,7 +40,7 @@ bool LoopClosing::ProcessKeyFrame(int id) {
   ++keyframes_since_loop_;
   slam_->ReadMap([&](const Map& map) {
     if (map.FindKeyFrame(id) == nullptr) return;  // erased already (threaded: made and culled)
-    loop = detector_->Process(map, id);            // every keyframe enters the database
+    loop = detector_->Process(map, id);           // every keyframe enters the database
     in_database_.push_back(id);
     if (in_database_.size() % kPruneKeyFrames == 0) PruneErased(map);
     if (!loop || !searching) return;
@@ -60,6 +64,15 @@ bool LoopClosing::ProcessKeyFrame(int id) {
   const std::lock_guard<std::mutex> lock(mutex_);
   loops_.push_back(closed);
   return true;
+}
+
+void LoopClosing::AddLoadedKeyFrame(int id) {
+  if (slam_ == nullptr || !detector_) return;
+  slam_->ReadMap([&](const Map& map) {
+    if (map.FindKeyFrame(id) == nullptr) return;
+    detector_->Add(map, id);
+    in_database_.push_back(id);
+  });
 }
 
 void LoopClosing::PruneErased(const Map& map) {

@@ -25,12 +25,28 @@ LoopDetector::LoopDetector(std::shared_ptr<const Vocabulary> vocabulary,
   }
 }
 
-std::optional<LoopDetection> LoopDetector::Process(const Map& map, int keyframe_id) {
-  const KeyFrame* query = map.FindKeyFrame(keyframe_id);
-  if (query == nullptr) {
-    throw std::invalid_argument("LoopDetector::Process: no keyframe " +
+namespace {
+
+const KeyFrame& FindOrThrow(const Map& map, int keyframe_id, const char* caller) {
+  const KeyFrame* keyframe = map.FindKeyFrame(keyframe_id);
+  if (keyframe == nullptr) {
+    throw std::invalid_argument(std::string(caller) + ": no keyframe " +
                                 std::to_string(keyframe_id) + " in the map");
   }
+  return *keyframe;
+}
+
+}  // namespace
+
+void LoopDetector::Add(const Map& map, int keyframe_id) {
+  const KeyFrame& keyframe = FindOrThrow(map, keyframe_id, "LoopDetector::Add");
+  const BowVector words = Words(map, keyframe);
+  database_.Add(keyframe_id, words);
+  entries_[keyframe_id] = {keyframe.frame_index, words};
+}
+
+std::optional<LoopDetection> LoopDetector::Process(const Map& map, int keyframe_id) {
+  const KeyFrame* query = &FindOrThrow(map, keyframe_id, "LoopDetector::Process");
   ++stats_.processed;
   const BowVector words = Words(map, *query);
   const CovisibilityIndex index(map);

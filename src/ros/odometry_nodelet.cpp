@@ -12,6 +12,7 @@
 #include "dslam/io/trajectory_io.h"
 #include "dslam/loop_closing/loop_closing.h"
 #include "dslam/place_recognition/vocabulary.h"
+#include "dslam/ros/keyframe_map_files.h"
 #include "dslam/ros/keyframe_map_outputs.h"
 #include "dslam/ros/param_loader.h"
 
@@ -30,6 +31,10 @@ OdometryNodelet::~OdometryNodelet() {
   if (info_sub_) info_sub_->unsubscribe();
   slot_.Close();
   if (worker_.joinable()) worker_.join();
+  if (keyframe_maps_ && slam_) {
+    slam_->WaitForBackEnd();
+    keyframe_maps_->SaveOnExit();
+  }
   map_publisher_.reset();  // stops its timer and service (the worker used it until now)
 }
 
@@ -61,17 +66,22 @@ void OdometryNodelet::onInit() {
     recorder_ = std::make_unique<TrajectoryRecorder>(config_.trajectory_stream);
     std::vector<std::shared_ptr<KeyFrameObserver>> observers;
     if (config.map.enabled) observers.push_back(mapper_ = std::make_shared<StaticMapper>(config));
+    // Loop closing and keyframe map files (their places and identity) share the vocabulary.
+    const auto vocabulary =
+        std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath()));
     if (config.backend.enabled && config.loop_closing.enabled) {  // it needs the keyframe map
-      loop_closing_ = std::make_shared<LoopClosing>(
-          config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())));
+      loop_closing_ = std::make_shared<LoopClosing>(config, vocabulary);
       observers.push_back(loop_closing_);
     }
+    keyframe_maps_ = std::make_unique<KeyFrameMapFiles>(nh, config_, vocabulary);
+    for (auto& observer : keyframe_maps_->Observers()) observers.push_back(observer);
     slam_ = std::make_unique<Slam>(
         config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous,
         // For save_refined_trajectory: per tracked frame its pose on its keyframe (144 bytes;
         // RefinedTrajectory), per keyframe its latest pose.
         RefinedPoseRecording::kOn, observers);
     if (loop_closing_) loop_closing_->Attach(slam_.get());
+    keyframe_maps_->Attach(slam_.get());
   } catch (const std::exception& e) {
     NODELET_FATAL("dslam: invalid parameters, not starting: %s", e.what());
     throw std::runtime_error(std::string("dslam: invalid parameters: ") + e.what());

@@ -3,6 +3,7 @@
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "dslam/ros/conversions.h"
+#include "dslam/ros/keyframe_map_files.h"
 #include "dslam/ros/odometry_nodelet.h"
 
 namespace dslam {
@@ -30,10 +31,14 @@ void OdometryNodelet::Process(const Input& input) {
     return;
   }
   const bool service_reset = ApplyRequestedReset();
+  if (service_reset) keyframe_maps_->AfterReset();
+  keyframe_maps_->BeforeFrame(frame.camera);
   FrameRequest request;
   request.points = publisher_->WantsPoints() || objects_publisher_->Wanted();
   request.edges = publisher_->WantsEdges();
+  const bool was_localising = slam_->Localising();
   FrameResult result = slam_->ProcessFrame(frame, request);
+  keyframe_maps_->AfterFrame(result, was_localising);
   ++processed_;
   const bool new_world = result.reset;  // the odometry's own reset: time went backwards
   if (new_world) {

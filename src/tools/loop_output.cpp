@@ -9,10 +9,8 @@
 namespace dslam {
 namespace tools {
 
-LoopOutput::LoopOutput(const Config& config, const std::string& vocabulary_path) {
+LoopOutput::LoopOutput(const Config& config, std::shared_ptr<const Vocabulary> vocabulary) {
   if (!config.loop_closing.enabled || !config.backend.enabled) return;
-  const std::string path = vocabulary_path.empty() ? DefaultVocabularyPath() : vocabulary_path;
-  auto vocabulary = std::make_shared<const Vocabulary>(Vocabulary::Load(path));
   closer_ = std::make_shared<LoopClosing>(config, std::move(vocabulary));
 }
 
@@ -47,10 +45,11 @@ void LoopOutput::Print() const {
   std::printf("loop closing: %zu loops closed, median %.2f ms per keyframe (p95 %.2f)\n",
               loops.size(), Median(times), Quantile(times, 0.95));
   for (const ClosedLoop& loop : loops) {
-    std::printf("  loop: frame %d seen again at frame %d, %d inliers; query keyframe moved %.3f m, "
-                "%.2f deg\n",
-                loop.detection.match_frame_index, loop.detection.query_frame_index,
-                loop.detection.inliers, loop.query_moved_m, loop.query_turned_deg);
+    std::printf(
+        "  loop: frame %d seen again at frame %d, %d inliers; query keyframe moved %.3f m, "
+        "%.2f deg\n",
+        loop.detection.match_frame_index, loop.detection.query_frame_index, loop.detection.inliers,
+        loop.query_moved_m, loop.query_turned_deg);
   }
 }
 

@@ -17,12 +17,12 @@ namespace dslam {
 namespace tools {
 
 /// Loop closing when config.loop_closing.enabled and config.backend.enabled (it works on the
-/// back end's keyframe map), with the vocabulary at `vocabulary_path` (empty: the committed one,
-/// DefaultVocabularyPath()).
+/// back end's keyframe map).
 class LoopOutput {
  public:
-  /// Loads the vocabulary when loop closing is on. Throws std::runtime_error when it cannot.
-  LoopOutput(const Config& config, const std::string& vocabulary_path);
+  /// Loop closing with `vocabulary` when it is on. Throws std::invalid_argument when it is on and
+  /// `vocabulary` is null.
+  LoopOutput(const Config& config, std::shared_ptr<const Vocabulary> vocabulary);
 
   /// The loop closer, for Slam's constructor (empty when off).
   std::vector<std::shared_ptr<KeyFrameObserver>> Observers() const;

@@ -6,18 +6,20 @@ namespace dslam {
 namespace tools {
 
 int Usage() {
-  std::cerr << "usage: dslam_run_dataset --dataset FOLDER --trajectory OUT.txt [--camera "
-               "camera.yaml]\n"
-               "                         [--status OUT.csv] [--static-points on|off] "
-               "[--backend on|off] [--config params.yaml]\n"
-               "                         [--summary OUT.json] [--segmentation OUT.csv] "
-               "[--max-frames N] [--quiet]\n"
-               "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
-               "                         [--objects OUT.txt] [--map OUT.pcd] "
-               "[--map-unmasked OUT.pcd]\n"
-               "                         [--loop-closing on|off] [--loops OUT.txt] "
-               "[--vocabulary FILE]\n"
-               "                         [--save-keyframe-map OUT.bin]\n";
+  std::cerr
+      << "usage: dslam_run_dataset --dataset FOLDER --trajectory OUT.txt [--camera "
+         "camera.yaml]\n"
+         "                         [--status OUT.csv] [--static-points on|off] "
+         "[--backend on|off] [--config params.yaml]\n"
+         "                         [--summary OUT.json] [--segmentation OUT.csv] "
+         "[--max-frames N] [--quiet]\n"
+         "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
+         "                         [--objects OUT.txt] [--map OUT.pcd] "
+         "[--map-unmasked OUT.pcd]\n"
+         "                         [--loop-closing on|off] [--loops OUT.txt] "
+         "[--vocabulary FILE]\n"
+         "                         [--save-keyframe-map OUT.bin] [--load-keyframe-map IN.bin]\n"
+         "                         [--localise-timeout-s S (10)]\n";
   return 2;
 }
 
@@ -72,6 +74,10 @@ bool Parse(int argc, char** argv, RunDatasetArgs* args) {
       args->vocabulary = value;
     else if (key == "--save-keyframe-map")
       args->save_keyframe_map = value;
+    else if (key == "--load-keyframe-map")
+      args->load_keyframe_map = value;
+    else if (key == "--localise-timeout-s" && std::stod(value) > 0.0)
+      args->localise_timeout_s = std::stod(value);
     else
       return false;
   }

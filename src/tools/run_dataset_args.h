@@ -30,6 +30,11 @@ struct RunDatasetArgs {
   std::string vocabulary;  ///< --vocabulary: vocabulary file; empty: the committed one
   /// --save-keyframe-map: the final keyframe map file (keyframe_map_output.h)
   std::string save_keyframe_map;
+  /// --load-keyframe-map: start in this keyframe map file (keyframe_map_output.h)
+  std::string load_keyframe_map;
+  /// [s] --localise-timeout-s: without a frame localised in the loaded map this long after the
+  /// first frame, a new map starts (Odometry::StartInMap)
+  double localise_timeout_s = 10.0;
   int max_frames = -1;   ///< --max-frames: process only the first N frames; -1: all
   bool quiet = false;    ///< --quiet: no progress bar
   bool threads = false;  ///< --threads: the back end on its own thread (kThreaded)

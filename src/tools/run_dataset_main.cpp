@@ -66,6 +66,7 @@ dslam::JsonObject SummaryJson(const dslam::RunSummary& summary,
   json.AddInteger("frames", summary.frames())
       .AddInteger("frames_with_pose", summary.frames_with_pose())
       .AddInteger("lost_frames", summary.lost_frames())
+      .AddInteger("localising_frames", summary.localising_frames())
       .AddBool("static_points", config.static_points.enabled)
       .AddBool("backend", config.backend.enabled)
       .AddBool("threads", args.threads)
@@ -193,6 +194,19 @@ void PrintReport(const Args& args, const dslam::Config& config, const Outputs& o
       summary.MedianMs("total"), summary.TrackingQuantile(0.5), args.trajectory.c_str());
 }
 
+// The vocabulary of the run (--vocabulary, default the committed one) when loop closing or a
+// keyframe map file needs it; null otherwise.
+std::shared_ptr<const dslam::Vocabulary> RunVocabulary(const Args& args,
+                                                       const dslam::Config& config) {
+  const bool loop_closing = config.loop_closing.enabled && config.backend.enabled;
+  if (!loop_closing && args.save_keyframe_map.empty() && args.load_keyframe_map.empty()) {
+    return nullptr;
+  }
+  const std::string path =
+      args.vocabulary.empty() ? dslam::DefaultVocabularyPath() : args.vocabulary;
+  return std::make_shared<const dslam::Vocabulary>(dslam::Vocabulary::Load(path));
+}
+
 int Run(const Args& args) {
   dslam::Config config;
   if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
@@ -204,16 +218,19 @@ int Run(const Args& args) {
   }
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
   dslam::tools::MapOutput maps(args.map, args.map_unmasked, config);
-  dslam::tools::LoopOutput loops(config, args.vocabulary);
+  const std::shared_ptr<const dslam::Vocabulary> vocabulary = RunVocabulary(args, config);
+  dslam::tools::LoopOutput loops(config, vocabulary);
   std::vector<std::shared_ptr<dslam::KeyFrameObserver>> observers = maps.Observers();
   for (auto& observer : loops.Observers()) observers.push_back(observer);
-  dslam::tools::KeyFrameMapOutput keyframe_map(args.save_keyframe_map, args.vocabulary);
+  dslam::tools::KeyFrameMapOutput keyframe_map(args.save_keyframe_map, vocabulary);
   for (auto& observer : keyframe_map.Observers()) observers.push_back(observer);
   dslam::Slam slam(config,
                    args.threads ? dslam::BackEndMode::kThreaded : dslam::BackEndMode::kSynchronous,
                    dslam::RefinedPoseRecording::kOn, observers);
   loops.Attach(&slam);
   keyframe_map.Attach(&slam);
+  keyframe_map.Load(args.load_keyframe_map, dataset.camera_yaml().camera, args.localise_timeout_s,
+                    &slam);
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
@@ -238,6 +255,7 @@ int Run(const Args& args) {
     dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
     maps.AddTo(&json);
     loops.AddTo(&json);
+    keyframe_map.AddTo(&json);
     if (out.objects) {  // --objects: their work per frame, and the tracking thread's share of it
       json.AddNumber("median_objects_ms", dslam::Median(out.objects->times_ms()), 6)
           .AddNumber("p95_objects_ms", dslam::Quantile(out.objects->times_ms(), 0.95), 6)

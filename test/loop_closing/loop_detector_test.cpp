@@ -109,6 +109,19 @@ TEST_F(LoopDetectorTest, FindsTheLoopAtTheTrueRelativePose) {
   EXPECT_EQ(detector.stats().processed, kPerLap + 3);
 }
 
+TEST_F(LoopDetectorTest, AddedKeyFramesOfALoadedMapAreFoundByTheNextRun) {
+  // The first lap as a loaded map: added without a search; the second lap's keyframes find it.
+  LoopDetector detector(vocabulary_, config_, scene_.camera);
+  for (int k = 0; k < kPerLap; ++k) detector.Add(scene_.map, AddTourKeyFrame(k));
+  EXPECT_EQ(detector.size(), static_cast<size_t>(kPerLap));
+  EXPECT_EQ(detector.stats().processed, 0);
+  EXPECT_TRUE(detector.last_candidates().empty());
+  const std::vector<LoopDetection> loops = Tour(&detector, kPerLap, kPerLap + 3);
+  ASSERT_FALSE(loops.empty());
+  EXPECT_LT(loops.front().match_keyframe_id, kPerLap);
+  EXPECT_THROW(detector.Add(scene_.map, 1000), std::invalid_argument);
+}
+
 TEST_F(LoopDetectorTest, SameInputsSameLoop) {
   LoopDetector a(vocabulary_, config_, scene_.camera), b(vocabulary_, config_, scene_.camera);
   for (int k = 0; k < kPerLap + 3; ++k) {

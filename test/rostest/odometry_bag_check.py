@@ -18,7 +18,6 @@ import os
 import sys
 import tempfile
 import time
-import types
 import unittest
 
 import numpy as np
@@ -37,7 +36,7 @@ sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 from dslam_tools import trajectory as traj  # noqa: E402
 import test_scenes  # noqa: E402 (beside this file)
 from rostest_helpers import (Recorder, is_identity, map_odom_transforms, matrix,  # noqa: E402
-                             play_bag)
+                             play_bag, tum_matrix)
 
 FRAMES = 60
 ATE_TOLERANCE_M = 0.05  # static_room, 60 frames: offline runs measure a few millimetres
@@ -48,12 +47,6 @@ KEYFRAME_PATH_TOLERANCE = 0.01
 # The camera mount: the default (DefaultBaseFromOptical), as the test plays no TF; the map frame
 # is the base frame at the first frame, whose optical frame is the saved trajectory's world.
 T_BASE_OPTICAL = np.array([[0, 0, 1, 0], [-1, 0, 0, 0], [0, -1, 0, 0], [0, 0, 0, 1]], float)
-
-
-def tum_matrix(row):
-    """4x4 pose of a TUM trajectory row (stamp tx ty tz qx qy qz qw)."""
-    return matrix(types.SimpleNamespace(x=row[1], y=row[2], z=row[3]),
-                  types.SimpleNamespace(x=row[4], y=row[5], z=row[6], w=row[7]))
 
 
 class OdometryBagTest(unittest.TestCase):

@@ -5,6 +5,7 @@ import collections
 import subprocess
 import threading
 import time
+import types
 
 import numpy as np
 import rospy
@@ -50,13 +51,15 @@ class Recorder:
             return self._received.get(name, [])[-1][1]
 
 
-def play_bag(bag, rate=0.5, settle_s=2.0):
+def play_bag(bag, rate=0.5, settle_s=2.0, node="/dslam", options=()):
     """Plays the camera topics of `bag` (test_scenes.scene(..., with_bag=True)) into the dslam
-    node: waits for the node (its save_trajectory service, up to 30 s), plays at `rate` times real
-    time once the node subscribes, then waits `settle_s` for it to process the last frames."""
-    rospy.wait_for_service("/dslam/save_trajectory", timeout=30.0)
-    subprocess.check_call(["rosbag", "play", "--quiet", "-r", str(rate), "--wait-for-subscribers",
-                           bag, "--topics"] + CAMERA_TOPICS)
+    node in namespace `node`: waits for it (its save_trajectory service, up to 30 s), plays at
+    `rate` times real time once a node subscribes (with rosbag play's `options`, e.g. ["-s", "1",
+    "-u", "2"]: from 1 s into the bag for 2 s), then waits `settle_s` for it to process the last
+    frames."""
+    rospy.wait_for_service(node + "/save_trajectory", timeout=30.0)
+    subprocess.check_call(["rosbag", "play", "--quiet", "-r", str(rate), "--wait-for-subscribers"]
+                          + list(options) + [bag, "--topics"] + CAMERA_TOPICS)
     rospy.sleep(settle_s)
 
 
@@ -75,6 +78,12 @@ def map_odom_transforms(rec, name="tf", map_frame="map", odom_frame="odom"):
     """{stamp (ns): TransformStamped} of the map -> odom transforms recorded as `name` (/tf)."""
     return {t.header.stamp.to_nsec(): t for msg in rec.messages(name) for t in msg.transforms
             if t.header.frame_id == map_frame and t.child_frame_id == odom_frame}
+
+
+def tum_matrix(row):
+    """4x4 pose of a TUM trajectory row (stamp tx ty tz qx qy qz qw)."""
+    return matrix(types.SimpleNamespace(x=row[1], y=row[2], z=row[3]),
+                  types.SimpleNamespace(x=row[4], y=row[5], z=row[6], w=row[7]))
 
 
 def is_identity(transform):

@@ -27,6 +27,10 @@ struct KeyFrameRecord {
   /// The matched map points with their labels at the end of the frame (FrameResult::points):
   /// unmarked ones (is_static false) were seen moving.
   std::vector<ObservedPoint> points;
+  /// From a loaded keyframe map (Slam::StartInMap), delivered after its reset: made by an
+  /// earlier run, not by this one's odometry (loop closing enters it in its place database
+  /// without searching a loop for it).
+  bool loaded = false;
 };
 
 /// Pose of a keyframe of the current window.

@@ -107,8 +107,12 @@ class Slam {
 
   /// As Reset(ResetMode::kNewWorld), then the odometry starts in `map` (a loaded keyframe map;
   /// Odometry::StartInMap: no pose until a frame is relocalised in it at a place `places` names,
-  /// a new world after `timeout_s` [s] without). Throws std::invalid_argument as StartInMap.
-  void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s);
+  /// a new world after `timeout_s` [s] without). The observers then receive `loaded` (keyframes
+  /// of `map` with their images, flagged KeyFrameRecord::loaded) after the reset, as Reset's
+  /// events are delivered: the static map fuses them, loop closing enters them in its database.
+  /// Throws std::invalid_argument as StartInMap.
+  void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
+                  std::vector<KeyFrameRecord> loaded = {});
   /// Between StartInMap and the first frame localised in its map (Odometry::localising).
   bool Localising() const;
 
@@ -158,9 +162,10 @@ class Slam {
  private:
   using Lock = std::unique_lock<std::mutex>;
 
-  /// Drops the back end's work, calls `reset` (which resets the odometry) and queues a reset of
-  /// `mode` for the observers, delivering it as Reset describes.
-  void ResetOdometry(ResetMode mode, const std::function<void()>& reset);
+  /// Drops the back end's work, calls `reset` (which resets the odometry), queues a reset of
+  /// `mode` and then `after_reset` for the observers, delivering them as Reset describes.
+  void ResetOdometry(ResetMode mode, const std::function<void()>& reset,
+                     std::vector<KeyFrameRecord> after_reset);
   /// Synchronous local mapping on the window the newest keyframe completes (lock held): the
   /// same job as the back-end thread's, copied, run and applied at once.
   BackEndStatus RunLocalMapping();

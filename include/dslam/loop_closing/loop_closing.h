@@ -63,6 +63,8 @@ class LoopClosing : public KeyFrameObserver {
  private:
   /// Detection for keyframe `id` and, for a loop, its correction; true when one was closed.
   bool ProcessKeyFrame(int id);
+  /// A keyframe of a loaded map (KeyFrameRecord::loaded) into the database, without a search.
+  void AddLoadedKeyFrame(int id);
   /// Erases from the database the keyframes `map` no longer has.
   void PruneErased(const Map& map);
 

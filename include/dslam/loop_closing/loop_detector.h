@@ -94,6 +94,11 @@ class LoopDetector {
   /// above). nullopt: none (yet). Throws std::invalid_argument when the map has no such keyframe.
   std::optional<LoopDetection> Process(const Map& map, int keyframe_id);
 
+  /// Step 1 alone: adds keyframe `keyframe_id` of `map` to the database without looking for a
+  /// loop (a keyframe of a loaded map) and without touching the chains. Throws
+  /// std::invalid_argument when the map has no such keyframe.
+  void Add(const Map& map, int keyframe_id);
+
   /// Removes a keyframe (erased from the map) from the database; no-op when it is not there.
   void Erase(int keyframe_id);
   /// Removes every keyframe, ends the chains and zeroes the counters (a reset of the map).

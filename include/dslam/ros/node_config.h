@@ -32,6 +32,10 @@ struct NodeConfig {
   double tf_wait_s = 0.0;
   bool backend_threads = true;
   double static_map_rate_hz = 1.0;
+  std::string keyframe_map = "";
+  double localise_timeout_s = 10.0;
+  std::string save_keyframe_map_on_exit = "";
+  bool keyframe_map_images = false;
 
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
@@ -96,6 +100,25 @@ struct NodeConfig {
             "highest rate at which static_map is rebuilt and published (map.enabled; only while "
             "subscribed and changed)"),
       s.static_map_rate_hz);
+    v(Field("keyframe_map", "-", 0, 0,
+            "keyframe map file (save_keyframe_map, dslam_run_dataset --save-keyframe-map) to "
+            "start in: no pose (status 'localising') until a frame is relocalised in it, then "
+            "every pose in its world (its first run's first frame); the map is extended. A file "
+            "that cannot be read or has another camera or vocabulary is refused with the reason "
+            "and the node maps from scratch; empty: none"),
+      s.keyframe_map);
+    v(Field("localise_timeout_s", "s", 0.1, 3600.0,
+            "without a frame localised in keyframe_map this long after the first, a new map "
+            "starts (a new trajectory segment, as when time goes backwards)"),
+      s.localise_timeout_s);
+    v(Field("save_keyframe_map_on_exit", "-", 0, 0,
+            "keyframe map file written when the node shuts down; empty: none"),
+      s.save_keyframe_map_on_exit);
+    v(Flag("keyframe_map_images",
+           "keep each map keyframe's colour and depth (about 2 MB per 640x480 keyframe, up to "
+           "tracking.max_keyframes of them) so that saved keyframe maps carry them and a node "
+           "that loads one re-fuses its static map; false: maps are saved without images"),
+      s.keyframe_map_images);
   }
 };
 

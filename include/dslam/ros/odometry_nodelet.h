@@ -58,6 +58,8 @@ namespace dslam {
 
 namespace ros_layer {
 
+class KeyFrameMapFiles;  // dslam/ros/keyframe_map_files.h
+
 class OdometryNodelet : public nodelet::Nodelet {
  public:
   OdometryNodelet() = default;
@@ -116,6 +118,8 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::unique_ptr<FramePublisher> publisher_;                     // used by the worker only
   std::unique_ptr<ObjectsPublisher> objects_publisher_;           // used by the worker only
   std::unique_ptr<KeyFrameMapPublisher> keyframe_map_publisher_;  // used by the worker only
+  // keyframe map files: worker calls, its service (own lock; keyframe_map_files.h)
+  std::unique_ptr<KeyFrameMapFiles> keyframe_maps_;
   std::shared_ptr<StaticMapper> mapper_;  // null unless map.enabled (own lock)
   // null unless backend.enabled and loop_closing.enabled (own lock; loop_closing.h)
   std::shared_ptr<LoopClosing> loop_closing_;

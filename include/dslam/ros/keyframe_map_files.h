@@ -1,0 +1,71 @@
+#pragma once
+// The node's keyframe map files (issue 34): the map of ~keyframe_map loaded at start and started
+// in at the first frame (its camera is known only then) and again after each reset; the service
+// save_keyframe_map and the save on shutdown (~save_keyframe_map_on_exit); the keyframe images
+// kept for saving (~keyframe_map_images). The file handling itself is map_file's
+// (keyframe_map_session.h), shared with dslam_run_dataset.
+//
+// Threads: BeforeFrame, AfterFrame and AfterReset are called by the worker thread only; the
+// service runs on a ROS callback thread and reads the map through Slam (its map lock) and the
+// camera under this object's own mutex, never holding both.
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+
+#include "dslam/SaveKeyFrameMap.h"
+#include "dslam/backend/slam.h"
+#include "dslam/map_file/keyframe_map_session.h"
+#include "dslam/ros/node_config.h"
+
+namespace dslam {
+namespace ros_layer {
+
+/// Loads, starts in and saves keyframe maps for the nodelet.
+class KeyFrameMapFiles {
+ public:
+  /// Reads config.keyframe_map (a file that cannot be read is reported and left out: the node
+  /// maps from scratch) and advertises save_keyframe_map on `nh`. `vocabulary` is the node's.
+  KeyFrameMapFiles(ros::NodeHandle& nh, const NodeConfig& config,
+                   std::shared_ptr<const Vocabulary> vocabulary);
+
+  /// The image keeper when config.keyframe_map_images, for Slam's constructor.
+  std::vector<std::shared_ptr<KeyFrameObserver>> Observers() const;
+  /// The Slam to start in the loaded map and to save; it must outlive this object's use of it.
+  void Attach(Slam* slam);
+
+  /// Before Slam::ProcessFrame (worker thread): starts the Slam in the loaded map when due (the
+  /// first frame, and the first after a reset), checked against `camera`, the frame's camera.
+  void BeforeFrame(const std::shared_ptr<const PinholeCamera>& camera);
+  /// After Slam::ProcessFrame (worker thread): a reset of the odometry (time went backwards)
+  /// makes the next frame start in the loaded map again, unless the frame was still localising
+  /// (the reset is then the localisation's timeout, and mapping goes on from scratch).
+  void AfterFrame(const FrameResult& result, bool was_localising);
+  /// The reset service reset the odometry (worker thread): the next frame starts in the loaded
+  /// map again.
+  void AfterReset();
+  /// Writes config.save_keyframe_map_on_exit when set (call before the Slam is destroyed).
+  void SaveOnExit();
+
+ private:
+  bool OnSave(dslam::SaveKeyFrameMap::Request& req, dslam::SaveKeyFrameMap::Response& res);
+  /// Saves the map to `path`; returns the response's message, throws on failure.
+  std::string Save(const std::string& path, int* keyframes, int* points);
+
+  const NodeConfig config_;
+  std::shared_ptr<const Vocabulary> vocabulary_;
+  std::shared_ptr<KeyFrameImageKeeper> keeper_;  ///< null unless keyframe_map_images
+  std::optional<KeyFrameMapFile> loaded_;        ///< ~keyframe_map, never changed after loading
+  Slam* slam_ = nullptr;
+  bool start_due_ = false;  ///< worker thread only
+  ros::ServiceServer save_srv_;
+  std::mutex mutex_;                             ///< guards camera_
+  std::shared_ptr<const PinholeCamera> camera_;  ///< of the latest frame
+};
+
+}  // namespace ros_layer
+}  // namespace dslam

@@ -1,0 +1,103 @@
+#include "dslam/ros/keyframe_map_files.h"
+
+#include <filesystem>
+
+namespace dslam {
+namespace ros_layer {
+
+KeyFrameMapFiles::KeyFrameMapFiles(ros::NodeHandle& nh, const NodeConfig& config,
+                                   std::shared_ptr<const Vocabulary> vocabulary)
+    : config_(config), vocabulary_(std::move(vocabulary)) {
+  if (config_.keyframe_map_images) keeper_ = std::make_shared<KeyFrameImageKeeper>();
+  if (!config_.keyframe_map.empty()) {
+    try {
+      loaded_ = LoadKeyFrameMap(config_.keyframe_map);
+      start_due_ = true;
+      ROS_INFO("dslam: keyframe map %s: %zu keyframes, %zu points; localising in it",
+               config_.keyframe_map.c_str(), loaded_->contents.keyframes.size(),
+               loaded_->contents.points.size());
+    } catch (const std::exception& e) {
+      ROS_ERROR("dslam: keyframe map refused, mapping from scratch: %s", e.what());
+    }
+  }
+  save_srv_ = nh.advertiseService("save_keyframe_map", &KeyFrameMapFiles::OnSave, this);
+}
+
+std::vector<std::shared_ptr<KeyFrameObserver>> KeyFrameMapFiles::Observers() const {
+  if (!keeper_) return {};
+  return {keeper_};
+}
+
+void KeyFrameMapFiles::Attach(Slam* slam) {
+  slam_ = slam;
+  if (keeper_) keeper_->Attach(slam);
+}
+
+void KeyFrameMapFiles::BeforeFrame(const std::shared_ptr<const PinholeCamera>& camera) {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    camera_ = camera;
+  }
+  if (!start_due_ || !loaded_ || slam_ == nullptr) return;
+  start_due_ = false;
+  const std::string why =
+      StartInKeyFrameMap(*loaded_, camera, vocabulary_, config_.localise_timeout_s, slam_);
+  if (!why.empty()) {
+    ROS_ERROR("dslam: keyframe map %s refused, mapping from scratch: %s",
+              config_.keyframe_map.c_str(), why.c_str());
+    loaded_.reset();  // it will not fit later either
+  }
+}
+
+void KeyFrameMapFiles::AfterFrame(const FrameResult& result, bool was_localising) {
+  if (!result.reset || !loaded_) return;
+  if (was_localising) {
+    ROS_WARN("dslam: %s (keyframe map %s)", result.message.c_str(), config_.keyframe_map.c_str());
+    return;
+  }
+  start_due_ = true;
+}
+
+void KeyFrameMapFiles::AfterReset() { start_due_ = loaded_.has_value(); }
+
+void KeyFrameMapFiles::SaveOnExit() {
+  if (config_.save_keyframe_map_on_exit.empty()) return;
+  try {
+    int keyframes = 0, points = 0;
+    ROS_INFO("dslam: %s", Save(config_.save_keyframe_map_on_exit, &keyframes, &points).c_str());
+  } catch (const std::exception& e) {
+    ROS_ERROR("dslam: keyframe map not saved on exit: %s", e.what());
+  }
+}
+
+bool KeyFrameMapFiles::OnSave(dslam::SaveKeyFrameMap::Request& req,
+                              dslam::SaveKeyFrameMap::Response& res) {
+  try {
+    res.message = Save(req.path, &res.keyframes, &res.points);
+    res.success = true;
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+  }
+  return true;
+}
+
+std::string KeyFrameMapFiles::Save(const std::string& path, int* keyframes, int* points) {
+  std::shared_ptr<const PinholeCamera> camera;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    camera = camera_;
+  }
+  if (!camera || slam_ == nullptr) throw std::runtime_error("no frame yet: no camera to save");
+  // The map lock only while the map is copied; images and the file after it.
+  const KeyFrameMapFile file =
+      KeyFrameMapOf(*slam_, *camera, vocabulary_->identity(), keeper_.get());
+  SaveKeyFrameMap(path, file);
+  *keyframes = static_cast<int>(file.contents.keyframes.size());
+  *points = static_cast<int>(file.contents.points.size());
+  return "wrote " + std::to_string(*keyframes) + " keyframes, " + std::to_string(*points) +
+         " points (" + std::to_string(std::filesystem::file_size(path)) + " bytes) to " + path;
+}
+
+}  // namespace ros_layer
+}  // namespace dslam

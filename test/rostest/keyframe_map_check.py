@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""rostest (keyframe_map.test): the node of the launch file maps frames 0-29 of a synthetic
+static_room bag and saves its keyframe map with save_keyframe_map (refused for a path it cannot
+write); a second node started with ~keyframe_map on that file gets frames 30-59: its status says
+"localising" until a frame is relocalised in the loaded map, after which its saved poses are in
+the first node's world (the first frame's camera), near the ground truth expressed there without
+any alignment, and its map extends the loaded one."""
+
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+import rospkg
+import rospy
+import rostest
+
+from dslam.msg import FrameStatus
+from dslam.srv import SaveKeyFrameMap, SaveTrajectory
+
+sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
+import test_scenes  # noqa: E402 (beside this file)
+from rostest_helpers import Recorder, play_bag, tum_matrix  # noqa: E402
+
+FRAMES = 60
+# static_room moves 0.2-0.3 m from frame 0 by frames 30-59: a node in its own world would be that
+# far off; offline runs localise at the first frame and stay within 5 mm (test_localisation)
+POSITION_TOLERANCE_M = 0.03
+MAX_LOCALISING_FRAMES = 10  # the issue's bound is 30 frames on real data
+
+
+class KeyFrameMapTest(unittest.TestCase):
+    def test_save_then_localise_in_a_second_node(self):
+        rospy.init_node("keyframe_map_check")
+        work = tempfile.mkdtemp(prefix="dslam_rostest_")
+        folder, bag = test_scenes.scene("static_room", FRAMES, with_bag=True)
+        play_bag(bag, options=["-u", "0.99"])  # frames 0-29 (30 Hz)
+        saved = os.path.join(work, "room.kfm")
+        save = rospy.ServiceProxy("/dslam/save_keyframe_map", SaveKeyFrameMap)
+        refused = save(os.path.join(work, "missing", "folder", "room.kfm"))
+        self.assertFalse(refused.success)
+        result = save(saved)
+        self.assertTrue(result.success, result.message)
+        self.assertGreater(result.keyframes, 1)
+        rospy.loginfo("keyframe_map_check: %s", result.message)
+        second = subprocess.Popen(["roslaunch", "dslam", "dslam.launch", "ns:=dslam_loaded",
+                                   "manager:=loaded_manager", "keyframe_map:=" + saved])
+        try:
+            self.check_second_node(folder, bag, work, result.keyframes)
+        finally:
+            second.send_signal(signal.SIGINT)
+            second.wait(timeout=30)
+
+    def check_second_node(self, folder, bag, work, saved_keyframes):
+        rec = Recorder()
+        rec.subscribe("/dslam_loaded/status", FrameStatus, "status")
+        play_bag(bag, node="/dslam_loaded", options=["-s", "1.0"])  # frames 30-59
+        states = [s.state for s in rec.messages("status")]
+        self.assertGreater(len(states), 0, "no status from the second node")
+        localising = states.index(next(s for s in states if s != "localising"))
+        rospy.loginfo("keyframe_map_check: states %s", states)
+        self.assertLessEqual(localising, MAX_LOCALISING_FRAMES)
+        self.assertNotIn("initialised", states, "the second node started a map of its own")
+        path = os.path.join(work, "second.txt")
+        result = rospy.ServiceProxy("/dslam_loaded/save_trajectory", SaveTrajectory)(path)
+        self.assertTrue(result.success, result.message)
+        self.assertGreater(result.poses, FRAMES // 2 - MAX_LOCALISING_FRAMES - 5)
+        truth = {"%.6f" % row[0]: tum_matrix(row) for row in
+                 np.loadtxt(os.path.join(folder, "groundtruth.txt"), comments="#", ndmin=2)}
+        first_stamp = min(truth)
+        T_world_truth = np.linalg.inv(truth[first_stamp])  # the first node's world: frame 0
+        worst = 0.0
+        for row in np.loadtxt(path, comments="#", ndmin=2):
+            expected = T_world_truth @ truth["%.6f" % row[0]]
+            worst = max(worst, np.linalg.norm(tum_matrix(row)[:3, 3] - expected[:3, 3]))
+        rospy.loginfo("keyframe_map_check: %d poses, worst position error %.4f m", result.poses,
+                      worst)
+        self.assertLess(worst, POSITION_TOLERANCE_M)
+        extended = rospy.ServiceProxy("/dslam_loaded/save_keyframe_map", SaveKeyFrameMap)(
+            os.path.join(work, "extended.kfm"))
+        self.assertTrue(extended.success, extended.message)
+        self.assertGreaterEqual(extended.keyframes, saved_keyframes)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dslam", "keyframe_map_check", KeyFrameMapTest)
