@@ -63,7 +63,7 @@ all_gtests() {
   sed -n 's/^dslam_test(\([A-Za-z0-9_]*\).*/\1/p' "$REPO"/test/*/CMakeLists.txt | sort
 }
 
-THREAD_GTESTS=(test_slam_threads test_static_map_slam test_loop_closing_threads)
+THREAD_GTESTS=(test_slam_threads test_static_map_slam test_loop_closing_threads test_map_session)
 case "$KIND" in
   thread)
     TARGETS=("${THREAD_GTESTS[@]}")

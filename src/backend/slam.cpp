@@ -206,6 +206,11 @@ void Slam::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeo
       std::move(loaded));
 }
 
+void Slam::SetPlaceLookup(std::shared_ptr<PlaceLookup> places) {
+  Lock lock(map_mutex_);
+  odometry_.SetPlaceLookup(std::move(places));
+}
+
 bool Slam::Localising() const {
   Lock lock(map_mutex_);
   return odometry_.localising();

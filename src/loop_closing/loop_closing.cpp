@@ -6,11 +6,17 @@
 
 #include "dslam/core/geometry.h"
 #include "dslam/core/stopwatch.h"
+#include "dslam/loop_closing/map_places.h"
 
 namespace dslam {
 
 LoopClosing::LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary)
     : config_(config.loop_closing), pose_config_(config.pose), vocabulary_(std::move(vocabulary)) {}
+
+void LoopClosing::Attach(Slam* slam) {
+  slam_ = slam;
+  if (slam_ != nullptr) slam_->SetPlaceLookup(std::make_shared<MapPlaces>(vocabulary_));
+}
 
 void LoopClosing::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
                               const std::vector<KeyFramePose>& /*window*/) {

@@ -1,5 +1,6 @@
 #include "dslam/loop_closing/map_places.h"
 
+#include <set>
 #include <stdexcept>
 
 #include "dslam/loop_closing/loop_verification.h"
@@ -14,15 +15,25 @@ MapPlaces::MapPlaces(std::shared_ptr<const Vocabulary> vocabulary)
 }
 
 std::vector<int> MapPlaces::Candidates(const Map& map, const FrameFeatures& features) {
+  std::set<int> in_map;
   for (const KeyFrame* keyframe : map.AllKeyFrames()) {
+    in_map.insert(keyframe->id);
     if (database_.Contains(keyframe->id)) continue;
     const cv::Mat descriptors = PointDescriptors(map, StaticMeasuredPoints(map, *keyframe));
     if (!descriptors.empty()) database_.Add(keyframe->id, vocabulary_->Transform(descriptors));
+    ids_.insert(keyframe->id);
+  }
+  for (auto it = ids_.begin(); it != ids_.end();) {  // keyframes the map erased
+    if (in_map.count(*it) != 0) {
+      ++it;
+      continue;
+    }
+    database_.Erase(*it);
+    it = ids_.erase(it);
   }
   if (features.descriptors.empty()) return {};
   PlaceQueryOptions options;
   options.max_results = kMaxPlaces;
-  options.exclude = [&](int id) { return map.FindKeyFrame(id) == nullptr; };
   std::vector<int> ids;
   for (const PlaceCandidate& candidate :
        database_.Query(vocabulary_->Transform(features.descriptors), options)) {

@@ -48,14 +48,15 @@ Map Map::FromContents(MapContents contents) {
   return map;
 }
 
-void Map::SetWindowTo(const std::vector<int>& ids) {
+void Map::SetWindowTo(const std::vector<int>& ids, int recent) {
   std::vector<int> present;
   for (int id : ids) {
     if (FindKeyFrame(id) != nullptr) present.push_back(id);
   }
   std::sort(present.begin(), present.end());
   present.erase(std::unique(present.begin(), present.end()), present.end());
-  MoveWindow(present, static_cast<int>(present.size()));
+  const int size = static_cast<int>(present.size());
+  MoveWindow(present, recent < 0 ? size : std::min(recent, size));
 }
 
 }  // namespace dslam

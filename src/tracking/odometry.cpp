@@ -121,13 +121,15 @@ bool Odometry::TrackInitialPose(Current* current, FrameResult* result) {
   // 3. Initial pose by motion-only BA (Huber) over marked points; RANSAC when they are too few.
   //    Beside it, the Delaunay graph of step 4, which needs the matches but not the pose.
   //    When that fails (a jump the prediction missed): match again with the wide radius, then
-  //    relocalise by descriptors.
+  //    relocalise by descriptors in the window, then at the places that place recognition names
+  //    in the whole keyframe map (SetPlaceLookup).
   const bool have_initial_pose =
       SolveInitialPose(current, T_camera_world_predicted, result->frame_index) ||
       (!wide &&
        RematchAndSolveInitialPose(current, T_camera_world_predicted,
                                   config_.tracking.wide_search_radius_px, result->frame_index)) ||
-      Relocalise(current, result->frame_index);
+      Relocalise(current, result->frame_index) ||
+      RelocaliseAtNamedPlaces(current, result->frame_index, map_places_.get());
   result->times.initial_pose_ms = stage.Restart();
   return have_initial_pose;
 }

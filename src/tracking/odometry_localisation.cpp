@@ -34,16 +34,25 @@ void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double t
 }
 
 bool Odometry::LocaliseInLoadedMap(Current* current, int frame_index) {
-  const std::vector<int> named = places_->Candidates(map_, current->features);
+  if (!RelocaliseAtNamedPlaces(current, frame_index, places_.get())) return false;
+  localising_ = false;
+  places_.reset();
+  initialised_ = true;
+  return true;
+}
+
+bool Odometry::RelocaliseAtNamedPlaces(Current* current, int frame_index, PlaceLookup* places) {
+  if (places == nullptr) return false;
+  std::vector<int> window_before;
+  for (const KeyFrame& keyframe : map_.keyframes()) window_before.push_back(keyframe.id);
+  const int recent_before = static_cast<int>(window_before.size() - map_.first_recent_keyframe());
+  const std::vector<int> named = places->Candidates(map_, current->features);
   for (size_t i = 0; i < named.size() && i < kPlacesTriedPerFrame; ++i) {
     map_.SetWindowTo(KeyFramesAround(map_, named[i], config_.tracking.window_keyframes));
     current->local_points = map_.LocalPoints({}, StaticSeenSinceFrame());
-    if (!Relocalise(current, frame_index)) continue;
-    localising_ = false;
-    places_.reset();
-    initialised_ = true;
-    return true;
+    if (Relocalise(current, frame_index)) return true;
   }
+  if (!named.empty()) map_.SetWindowTo(window_before, recent_before);
   return false;
 }
 

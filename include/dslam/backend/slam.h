@@ -22,8 +22,8 @@
 //   determination and local BA on the copy, the expensive part) without the lock: the job's copy
 //   is the back-end thread's alone. A Reset while a job runs increments the generation; the job's
 //   results are then dropped.
-// - Every other public member (Reset, StartInMap, Localising, WaitForBackEnd, TakeUnreportedRuns,
-// HoldBackEnd,
+// - Every other public member (Reset, StartInMap, Localising, SetPlaceLookup, WaitForBackEnd,
+// TakeUnreportedRuns, HoldBackEnd,
 //   RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames) takes it; getters return copies, never
 //   references into the map. config() is immutable.
 // - Keyframe observers (keyframe_observer.h, given to the constructor; the static map): under the
@@ -115,6 +115,9 @@ class Slam {
                   std::vector<KeyFrameRecord> loaded = {});
   /// Between StartInMap and the first frame localised in its map (Odometry::localising).
   bool Localising() const;
+  /// Place recognition over the whole keyframe map for lost frames (Odometry::SetPlaceLookup);
+  /// call before the first frame. `places` is called from the tracking thread only.
+  void SetPlaceLookup(std::shared_ptr<PlaceLookup> places);
 
   /// Threaded: blocks until no keyframe is queued, no run is in progress and the observers have
   /// every event (releases both holds first). Synchronous: returns at once. Rethrows an exception

@@ -35,9 +35,9 @@ constexpr int kPruneKeyFrames = 50;
 
 /// A loop that was verified and corrected.
 struct ClosedLoop {
-  LoopDetection detection;       ///< as verified (before the correction)
-  double query_moved_m = 0.0;    ///< [m] how far the correction moved the query keyframe
-  double query_turned_deg = 0.0; ///< [deg] and turned it
+  LoopDetection detection;        ///< as verified (before the correction)
+  double query_moved_m = 0.0;     ///< [m] how far the correction moved the query keyframe
+  double query_turned_deg = 0.0;  ///< [deg] and turned it
 };
 
 /// Loop closing as at the top of this file.
@@ -48,8 +48,10 @@ class LoopClosing : public KeyFrameObserver {
   LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary);
 
   /// The Slam whose map is searched and corrected; call before its first frame. `slam` must
-  /// outlive this object's use by it.
-  void Attach(Slam* slam) { slam_ = slam; }
+  /// outlive this object's use by it. The same vocabulary serves `slam`'s lost frames: a frame
+  /// that cannot be relocalised in the window is tried at the places MapPlaces names in the whole
+  /// keyframe map (Slam::SetPlaceLookup).
+  void Attach(Slam* slam);
 
   void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
                    const std::vector<KeyFramePose>& window) override;
@@ -79,7 +81,7 @@ class LoopClosing : public KeyFrameObserver {
   /// kPruneKeyFrames keyframes, so that it stays as bounded as the map (tracking.max_keyframes).
   std::vector<int> in_database_;
   std::vector<LoopEdge> loop_edges_;  ///< every accepted loop, for the next loop's pose graph
-  mutable std::mutex mutex_;  ///< guards loops_ and times_ms_
+  mutable std::mutex mutex_;          ///< guards loops_ and times_ms_
   std::vector<ClosedLoop> loops_;
   std::vector<double> times_ms_;
 };

@@ -6,6 +6,7 @@
 // frame's words are those of all its ORB descriptors, since its points are not labelled yet.
 
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "dslam/place_recognition/place_database.h"
@@ -25,8 +26,8 @@ class MapPlaces : public PlaceLookup {
   explicit MapPlaces(std::shared_ptr<const Vocabulary> vocabulary);
 
   /// The best-scoring keyframes of `map` for `features`, best first. The database is filled at
-  /// the first call with every keyframe of `map` and takes keyframes added since at later calls
-  /// (keyframes erased from the map are never named).
+  /// the first call with every keyframe of `map`, takes keyframes added since at later calls and
+  /// drops those the map erased (it stays as bounded as the map).
   std::vector<int> Candidates(const Map& map, const FrameFeatures& features) override;
 
   /// Keyframes in the database.
@@ -35,6 +36,7 @@ class MapPlaces : public PlaceLookup {
  private:
   std::shared_ptr<const Vocabulary> vocabulary_;
   PlaceDatabase database_;
+  std::set<int> ids_;  ///< keyframes in database_
 };
 
 }  // namespace dslam

@@ -146,10 +146,10 @@ class Map {
   /// point lists, ids in keyframe lists that name no point dropped. Throws std::invalid_argument
   /// when a point or keyframe id is negative or repeats.
   static Map FromContents(MapContents contents);
-  /// Makes the keyframes with `ids` (those in the map) the window, all of them recent; the others
-  /// go to the archive (none is erased). For a tracker that starts in a loaded map at a place
-  /// that place recognition chose.
-  void SetWindowTo(const std::vector<int>& ids);
+  /// Makes the keyframes with `ids` (those in the map) the window, the newest `recent` of them
+  /// recent (negative: all); the others go to the archive (none is erased). For a tracker that
+  /// relocalises at a place that place recognition chose, and that restores its window after.
+  void SetWindowTo(const std::vector<int>& ids, int recent = -1);
 
   /// Adds a point, assigns and returns its id.
   PointId AddPoint(MapPoint point);

@@ -61,6 +61,11 @@ class Odometry {
   void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s);
   /// Between StartInMap and the first frame localised in the map (or its timeout).
   bool localising() const { return localising_; }
+  /// Place recognition over the whole keyframe map for lost frames (null: none, the default):
+  /// a frame that cannot be relocalised in the window is tried at the places `places` names
+  /// (RelocaliseAtNamedPlaces), so that a tracker lost for long finds a view it left the window
+  /// with. Kept across resets.
+  void SetPlaceLookup(std::shared_ptr<PlaceLookup> places) { map_places_ = std::move(places); }
 
   const Map& map() const { return map_; }  ///< the local map (for visualisation)
   /// The local map, for the back end to refine between frames (Slam); call
@@ -98,10 +103,12 @@ class Odometry {
   /// Steps 2 and 3 of ProcessFrame: the local map matched around the prediction and the initial
   /// pose from it (with a wider search and relocalisation when that fails). False: no pose.
   bool TrackInitialPose(Current* current, FrameResult* result);
-  /// While localising: the window set around each keyframe `places_` names for the frame (best
-  /// first, KeyFramesAround) and the frame relocalised in it (Relocalise); true at the first
-  /// success, which ends localising. False: the window is left at the last place tried.
+  /// While localising: RelocaliseAtNamedPlaces with `places_`; its success ends localising.
   bool LocaliseInLoadedMap(Current* current, int frame_index);
+  /// The window set around each keyframe `places` names for the frame (best first, at most
+  /// kPlacesTriedPerFrame, KeyFramesAround) and the frame relocalised there (Relocalise); true
+  /// at the first success. False: the window is as it was before.
+  bool RelocaliseAtNamedPlaces(Current* current, int frame_index, PlaceLookup* places);
   /// The frame before the loaded map localised it: no pose, TrackingState::kLocalising.
   FrameResult NotLocalised(Current* current, FrameResult result);
   FrameResult Initialise(Current* current, FrameResult result);
@@ -191,12 +198,13 @@ class Odometry {
   int lost_frames_ = 0;
   int last_keyframe_frame_ = 0;
   int last_keyframe_static_ = 0;
-  WeakEpisode weak_episode_;             ///< reanchoring.h
-  std::shared_ptr<PlaceLookup> places_;  ///< StartInMap's, until localised or reset
-  bool localising_ = false;              ///< StartInMap was called and no frame localised yet
-  double localise_timeout_s_ = 0.0;      ///< [s] StartInMap's timeout
-  bool localise_started_ = false;        ///< a frame was processed since StartInMap
-  double localise_start_s_ = 0.0;        ///< [s] stamp of that first frame
+  WeakEpisode weak_episode_;                 ///< reanchoring.h
+  std::shared_ptr<PlaceLookup> places_;      ///< StartInMap's, until localised or reset
+  std::shared_ptr<PlaceLookup> map_places_;  ///< SetPlaceLookup's, for lost frames
+  bool localising_ = false;                  ///< StartInMap was called and no frame localised yet
+  double localise_timeout_s_ = 0.0;          ///< [s] StartInMap's timeout
+  bool localise_started_ = false;            ///< a frame was processed since StartInMap
+  double localise_start_s_ = 0.0;            ///< [s] stamp of that first frame
   /// A pose with fewer than reanchor_weak_inliers inliers was tracked since the last keyframe.
   bool weak_since_keyframe_ = false;
 
