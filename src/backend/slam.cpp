@@ -77,7 +77,9 @@ void Slam::QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* 
 }
 
 void Slam::QueueReset(ResetMode mode) {
-  if (!observers_.empty()) events_.resets.emplace_back(events_.keyframes.size(), mode);
+  if (observers_.empty()) return;
+  events_.resets.emplace_back(events_.keyframes.size(), mode);
+  events_.corrected.clear();  // of the world the reset ends
 }
 
 Slam::Delivery Slam::TakeEvents() {
@@ -110,6 +112,8 @@ void Slam::Deliver(const Delivery& delivery) const {
     for (const auto& observer : observers_) observer->OnReset(mode);
   }
   deliver_keyframes(delivery.keyframes.size());
+  if (delivery.corrected.empty()) return;
+  for (const auto& observer : observers_) observer->OnCorrection(delivery.corrected);
 }
 
 BackEndStatus Slam::RunLocalMapping() {
@@ -297,6 +301,12 @@ bool Slam::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_came
   live->CorrectKeyFrames(T_world_camera_corrected);
   odometry_.AdoptNewestKeyFramePose();
   if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
+  if (!observers_.empty()) {  // delivered with the next events (the static map follows)
+    events_.corrected.clear();
+    for (const KeyFrame* keyframe : map().AllKeyFrames()) {
+      events_.corrected.push_back({keyframe->id, keyframe->T_world_camera});
+    }
+  }
   return true;
 }
 

@@ -1,6 +1,7 @@
 #include "dslam/mapping/static_mapper.h"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 #include <utility>
 
@@ -29,7 +30,8 @@ StaticMapper::StaticMapper(const Config& config)
                                           config.depth_noise.max_depth_m)),
       min_depth_m_(config.depth_noise.min_depth_m),
       max_depth_m_(config.depth_noise.max_depth_m),
-      voxels_(config.map.voxel_size_m) {}
+      voxels_(config.map.voxel_size_m),
+      max_fused_kept_(static_cast<size_t>(config.tracking.max_keyframes)) {}
 
 StaticMapper::WindowKeyFrame StaticMapper::Prepare(const KeyFrameRecord& keyframe) const {
   BackProjection options;
@@ -74,6 +76,7 @@ void StaticMapper::OnReset(ResetMode mode) {
   voxels_.Clear();
   window_.clear();
   views_.clear();
+  fused_.clear();
   stats_ = StaticMapStats();
   ++revision_;
 }
@@ -105,6 +108,7 @@ void StaticMapper::FuseForGood(WindowKeyFrame keyframe) {
     }
   }
   for (const ColouredPoint& point : points) voxels_.Add(point, keyframe.id);
+  KeepFused(keyframe.id, keyframe.T_world_camera, points);
   const Eigen::Vector3f centre = keyframe.T_world_camera.translation().cast<float>();
   stats_.cropped_voxels += voxels_.Crop(centre, config_.extent_m);
   ++stats_.fused_keyframes;
@@ -112,6 +116,62 @@ void StaticMapper::FuseForGood(WindowKeyFrame keyframe) {
     views_.push_back(std::move(keyframe.view));
     while (static_cast<int>(views_.size()) > config_.free_space_keyframes) views_.pop_front();
   }
+}
+
+void StaticMapper::KeepFused(int id, const Eigen::Isometry3d& T_world_camera,
+                             const ColouredCloud& points_world) {
+  FusedKeyFrame fused{id, T_world_camera, {}};
+  const Eigen::Isometry3f T_camera_world = T_world_camera.inverse().cast<float>();
+  fused.points_camera.reserve(points_world.size());
+  for (const ColouredPoint& point : points_world) {
+    fused.points_camera.push_back(Transformed(T_camera_world, point));
+  }
+  fused_.push_back(std::move(fused));
+  while (fused_.size() > max_fused_kept_) fused_.pop_front();
+}
+
+void StaticMapper::OnCorrection(const std::vector<KeyFramePose>& keyframes) {
+  std::unordered_map<int, Eigen::Isometry3d> poses;
+  for (const KeyFramePose& pose : keyframes) poses.emplace(pose.id, pose.T_world_camera);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (WindowKeyFrame& keyframe : window_) {
+    const auto pose = poses.find(keyframe.id);
+    if (pose != poses.end()) keyframe.T_world_camera = pose->second;
+  }
+  // Points whose voxels were carved (seen through later) or cropped since stay out.
+  for (FusedKeyFrame& fused : fused_) {
+    const Eigen::Isometry3f T_old = fused.T_world_camera.cast<float>();
+    ColouredCloud& points = fused.points_camera;
+    points.erase(std::remove_if(points.begin(), points.end(),
+                                [&](const ColouredPoint& point) {
+                                  return !voxels_.Contains(voxels_.KeyOf(T_old * point.p));
+                                }),
+                 points.end());
+  }
+  // [world_new <- world_old] of each fused keyframe in the correction; one the map erased moves
+  // with the nearest older one that is in it (the nearest newer one when none is older).
+  std::map<int, Eigen::Isometry3d> moved;
+  for (const FusedKeyFrame& fused : fused_) {
+    const auto pose = poses.find(fused.id);
+    if (pose != poses.end()) moved[fused.id] = pose->second * fused.T_world_camera.inverse();
+  }
+  voxels_.Clear();
+  for (FusedKeyFrame& fused : fused_) {
+    auto nearest = moved.upper_bound(fused.id);
+    if (nearest != moved.begin()) --nearest;
+    if (nearest != moved.end()) fused.T_world_camera = nearest->second * fused.T_world_camera;
+    const Eigen::Isometry3f T = fused.T_world_camera.cast<float>();
+    for (const ColouredPoint& point : fused.points_camera) {
+      voxels_.Add(Transformed(T, point), fused.id);
+    }
+  }
+  if (!fused_.empty()) {
+    const Eigen::Vector3f centre = fused_.back().T_world_camera.translation().cast<float>();
+    stats_.cropped_voxels += voxels_.Crop(centre, config_.extent_m);
+  }
+  views_.clear();  // their poses are the old ones: the next keyframes' checks start afresh
+  ++stats_.corrections;
+  ++revision_;
 }
 
 ColouredCloud StaticMapper::CheckedPoints(const WindowKeyFrame& keyframe) {

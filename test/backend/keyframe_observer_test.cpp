@@ -37,10 +37,17 @@ class Recorder : public KeyFrameObserver {
     events.push_back(mode == ResetMode::kNewWorld ? "r1" : "r0");
     Leave();
   }
+  void OnCorrection(const std::vector<KeyFramePose>& keyframes) override {
+    Enter();
+    events.push_back("c" + std::to_string(keyframes.size()));
+    corrected = keyframes;
+    Leave();
+  }
 
   std::vector<std::string> events;
   std::vector<KeyFrameRecord> records;
   std::vector<KeyFramePose> last_window;
+  std::vector<KeyFramePose> corrected;   ///< of the last OnCorrection
   std::vector<std::thread::id> threads;  ///< the thread of each call
   bool overlapped = false;
 
@@ -162,6 +169,40 @@ TEST(KeyFrameObserver, ResetsArriveInOrderWithTheKeyFrames) {
     slam.WaitForBackEnd();
     EXPECT_EQ(first->events, expected);
     EXPECT_EQ(second->events, expected);
+  }
+}
+
+TEST(KeyFrameObserver, ACorrectionArrivesAfterTheKeyFramesWithEveryCorrectedPose) {
+  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
+    auto recorder = std::make_shared<Recorder>();
+    Slam slam(WithBackEnd(false), mode, RefinedPoseRecording::kOn, {recorder});
+    Fed run;
+    Feed(&slam, 0, 15, FrameRequest{}, &run);
+    slam.WaitForBackEnd();
+    const Map map = slam.MapSnapshot();
+    const size_t keyframes = map.num_keyframes();
+    const int newest = map.keyframes().back().id;
+    Eigen::Isometry3d moved = map.keyframes().back().T_world_camera;
+    moved.translation().x() += 0.1;
+    ASSERT_TRUE(slam.CorrectKeyFrames({{newest, moved}}));
+    Feed(&slam, 15, 16, FrameRequest{}, &run);  // the next delivery carries it
+    slam.WaitForBackEnd();
+    ASSERT_FALSE(recorder->events.empty());
+    EXPECT_EQ(recorder->events.back(),
+              "c" + std::to_string(keyframes + run.results.back().keyframe));
+    ASSERT_FALSE(recorder->corrected.empty());
+    bool found = false;
+    for (const KeyFramePose& pose : recorder->corrected) {
+      if (pose.id != newest) continue;
+      found = true;
+      EXPECT_TRUE(pose.T_world_camera.isApprox(moved, 1e-9));
+    }
+    EXPECT_TRUE(found);
+    // A reset after a correction drops it: the observers never see the old world's poses.
+    ASSERT_TRUE(slam.CorrectKeyFrames({{newest, moved}}));
+    slam.Reset(ResetMode::kNewWorld);
+    slam.WaitForBackEnd();
+    EXPECT_EQ(recorder->events.back(), "r1");
   }
 }
 

@@ -53,6 +53,39 @@ TEST(StaticMapper, CorrectionsMoveTheWindowsPointsUntilTheKeyframeLeavesIt) {
   }
 }
 
+TEST(StaticMapper, ALoopCorrectionReFusesFusedKeyFramesAtTheirCorrectedPoses) {
+  StaticMapper mapper(MapTestConfig());
+  const KeyFrameRecord first = MakeKeyFrame(0, Wall(kPlaneDepthM));
+  const KeyFrameRecord second = MakeKeyFrame(1, Wall(kPlaneDepthM));
+  mapper.OnKeyFrames({first, second}, {});  // both fused for good at once
+  const size_t voxels = mapper.stats().voxels;
+  ASSERT_GT(voxels, 0u);
+  // Keyframe 1 saw the same wall from the same pose: one wall. The loop correction says it was
+  // 0.4 m further forward (and keyframe 0 stays): keyframe 1's points move with it.
+  Eigen::Isometry3d corrected = Eigen::Isometry3d::Identity();
+  corrected.translation() = Eigen::Vector3d(0.0, 0.0, 0.4);
+  const uint64_t revision = mapper.revision();
+  mapper.OnCorrection({{0, Eigen::Isometry3d::Identity()}, {1, corrected}});
+  EXPECT_GT(mapper.revision(), revision);
+  EXPECT_EQ(mapper.stats().corrections, 1);
+  const auto depths_cm = [&mapper] {  // the walls' depths in the map [cm]
+    std::set<long> depths;
+    for (const ColouredPoint& point : mapper.Cloud())
+      depths.insert(std::lround(100.0 * point.p.z()));
+    return depths;
+  };
+  const std::set<long> two_walls{std::lround(100.0 * kPlaneDepthM),
+                                 std::lround(100.0 * (kPlaneDepthM + 0.4))};
+  EXPECT_EQ(depths_cm(), two_walls);
+  // Corrected back: one wall again, as many voxels as before.
+  mapper.OnCorrection({{0, Eigen::Isometry3d::Identity()}, {1, Eigen::Isometry3d::Identity()}});
+  EXPECT_EQ(mapper.stats().voxels, voxels);
+  EXPECT_EQ(depths_cm(), std::set<long>{std::lround(100.0 * kPlaneDepthM)});
+  // Keyframe 1 is not in this correction (the map erased it): it moves with keyframe 0.
+  mapper.OnCorrection({{0, corrected}});
+  EXPECT_EQ(depths_cm(), std::set<long>{std::lround(100.0 * (kPlaneDepthM + 0.4))});
+}
+
 TEST(StaticMapper, ResetWithANewWorldEmptiesTheMapAndKeepPoseFusesTheWindow) {
   StaticMapper mapper(MapTestConfig());
   const KeyFrameRecord first = MakeKeyFrame(0, Wall(kPlaneDepthM));

@@ -55,6 +55,11 @@ class KeyFrameObserver {
   /// The odometry was reset (Slam::Reset, or time went backwards: kNewWorld). Keyframes after it
   /// belong to the new run; with kNewWorld to a new world frame.
   virtual void OnReset(ResetMode mode) = 0;
+  /// The keyframe map was corrected (Slam::CorrectKeyFrames: a loop): `keyframes` is every
+  /// keyframe of the map, window and archive, oldest first, at its corrected pose. Delivered after
+  /// the keyframes of the same delivery (those made before the correction are in the list at
+  /// their corrected poses); a reset after it drops it. The default ignores it.
+  virtual void OnCorrection(const std::vector<KeyFramePose>& keyframes) {}
 };
 
 }  // namespace dslam

@@ -182,7 +182,8 @@ class Slam {
   void RethrowBackEndError();  ///< lock held
   /// Keyframes queued for local mapping or events for the observers (lock held).
   bool HasBackEndWork() const {
-    return pending_ > 0 || !events_.keyframes.empty() || !events_.resets.empty();
+    return pending_ > 0 || !events_.keyframes.empty() || !events_.resets.empty() ||
+           !events_.corrected.empty();
   }
   /// Events for the observers: keyframes and resets in the order they happened, and the
   /// window's poses when they were taken.
@@ -190,6 +191,8 @@ class Slam {
     std::vector<KeyFrameRecord> keyframes;             ///< oldest first
     std::vector<std::pair<size_t, ResetMode>> resets;  ///< (keyframes made before it, mode)
     std::vector<KeyFramePose> window;                  ///< filled by TakeEvents
+    /// Every keyframe's pose after the newest correction since the last reset; empty: none.
+    std::vector<KeyFramePose> corrected;
   };
   /// Queues `result`'s keyframe for the observers (lock held); moves the points out of `result`
   /// unless `keep_points`.

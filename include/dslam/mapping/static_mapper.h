@@ -13,6 +13,13 @@
 //   and the map is cropped to the cube of half-side map.extent_m around its camera (the memory
 //   bound).
 // - A reset with kNewWorld empties everything.
+// - A loop correction (OnCorrection) moves the window's keyframes to their corrected poses and
+//   re-fuses the map: the fused points of the newest tracking.max_keyframes fused keyframes are
+//   kept in their optical frames (about 16 bytes per point, a few thousand points per keyframe),
+//   so the voxels are rebuilt from them at the corrected poses (a keyframe the map no longer has
+//   moves with the nearest older one it has; points whose voxels were carved or cropped since
+//   stay out), and a wall seen
+//   before and after the loop is one wall, not two.
 //
 // Threads: the observer calls come from one thread at a time (Slam's contract); Cloud, stats,
 // revision and FuseWindow may be called from any thread. One mutex guards the state; it is never
@@ -39,6 +46,7 @@ struct StaticMapStats {
   size_t transient_points = 0;  ///< keyframe points not fused: other keyframes saw through them
   size_t carved_voxels = 0;     ///< voxels removed as transient
   size_t cropped_voxels = 0;    ///< voxels removed outside the extent
+  int corrections = 0;          ///< loop corrections that re-fused the map
 };
 
 /// Fuses Slam's keyframes into a static map (see above).
@@ -52,6 +60,8 @@ class StaticMapper : public KeyFrameObserver {
   void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
                    const std::vector<KeyFramePose>& window) override;
   void OnReset(ResetMode mode) override;
+  /// Re-fuses the map at the corrected poses (top of this file).
+  void OnCorrection(const std::vector<KeyFramePose>& keyframes) override;
 
   /// Fuses the window's keyframes for good, oldest first, at their current poses (the end of a
   /// run: nothing corrects them any more).
@@ -74,8 +84,17 @@ class StaticMapper : public KeyFrameObserver {
     DepthView view;
   };
 
+  /// A keyframe fused for good: its fused points in its optical frame, for re-fusion.
+  struct FusedKeyFrame {
+    int id = -1;
+    Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+    ColouredCloud points_camera;  ///< [m] optical frame
+  };
   WindowKeyFrame Prepare(const KeyFrameRecord& keyframe) const;  ///< no lock needed
   void FuseForGood(WindowKeyFrame keyframe);                     ///< lock held
+  /// Keeps `points_world` of keyframe `id` for re-fusion (in its optical frame); lock held.
+  void KeepFused(int id, const Eigen::Isometry3d& T_world_camera,
+                 const ColouredCloud& points_world);
   /// The points of `keyframe` that the views of earlier fused keyframes do not see through.
   ColouredCloud CheckedPoints(const WindowKeyFrame& keyframe);  ///< lock held
 
@@ -88,6 +107,8 @@ class StaticMapper : public KeyFrameObserver {
   VoxelMap voxels_;
   std::deque<WindowKeyFrame> window_;  ///< oldest first
   std::deque<DepthView> views_;        ///< of the latest fused keyframes, oldest first
+  const size_t max_fused_kept_;        ///< tracking.max_keyframes
+  std::deque<FusedKeyFrame> fused_;    ///< the newest fused keyframes, oldest first
   StaticMapStats stats_;
   uint64_t revision_ = 0;
 };
