@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "dslam/loop_closing/covisibility.h"
 #include "dslam/loop_closing/loop_verification.h"
+#include "dslam/tracking/keyframe_window.h"
 
 namespace dslam {
 
@@ -36,6 +36,22 @@ const KeyFrame& FindOrThrow(const Map& map, int keyframe_id, const char* caller)
   return *keyframe;
 }
 
+// Ids of the keyframes sharing at least one point with `keyframe` (itself excluded), ascending.
+std::vector<int> CovisibleIds(const Map& map, const KeyFrame& keyframe) {
+  std::vector<int> ids;
+  for (const auto& [id, shared] : SharedPointCounts(map, keyframe, 1)) ids.push_back(id);
+  return ids;
+}
+
+// (keyframe id, shared points) of the keyframes sharing points with `keyframe`, most shared
+// first (ties: lower id first).
+std::vector<std::pair<int, int>> MostCovisibleFirst(const Map& map, const KeyFrame& keyframe) {
+  std::vector<std::pair<int, int>> counts = SharedPointCounts(map, keyframe, 1);
+  std::stable_sort(counts.begin(), counts.end(),
+                   [](const auto& a, const auto& b) { return a.second > b.second; });
+  return counts;
+}
+
 }  // namespace
 
 void LoopDetector::Add(const Map& map, int keyframe_id) {
@@ -49,8 +65,7 @@ std::optional<LoopDetection> LoopDetector::Process(const Map& map, int keyframe_
   const KeyFrame* query = &FindOrThrow(map, keyframe_id, "LoopDetector::Process");
   ++stats_.processed;
   const BowVector words = Words(map, *query);
-  const CovisibilityIndex index(map);
-  const std::vector<int> covisible = index.CovisibleIds(*query);
+  const std::vector<int> covisible = CovisibleIds(map, *query);
   last_candidates_ = Candidates(map, *query, words, covisible);
   stats_.candidates += static_cast<int>(last_candidates_.size());
   database_.Add(keyframe_id, words);
@@ -58,7 +73,7 @@ std::optional<LoopDetection> LoopDetector::Process(const Map& map, int keyframe_
 
   std::vector<CandidateGroup> groups;
   for (const PlaceCandidate& candidate : last_candidates_) {
-    groups.push_back(Group(map, index, candidate.id));
+    groups.push_back(Group(map, candidate.id));
   }
   const std::vector<int> consistent = chains_.Update(groups, config_.consistent_keyframes);
   stats_.consistent += static_cast<int>(consistent.size());
@@ -66,7 +81,7 @@ std::optional<LoopDetection> LoopDetector::Process(const Map& map, int keyframe_
     if (std::find(consistent.begin(), consistent.end(), candidate.id) == consistent.end()) {
       continue;
     }
-    std::optional<LoopDetection> loop = Verify(map, index, *query, candidate);
+    std::optional<LoopDetection> loop = Verify(map, *query, candidate);
     if (loop) {
       chains_.Clear();
       return loop;
@@ -126,11 +141,10 @@ std::vector<PlaceCandidate> LoopDetector::Candidates(const Map& map, const KeyFr
   return database_.Query(words, options);
 }
 
-CandidateGroup LoopDetector::Group(const Map& map, const CovisibilityIndex& index,
-                                   int candidate) const {
+CandidateGroup LoopDetector::Group(const Map& map, int candidate) const {
   CandidateGroup group;
   group.candidate = candidate;
-  group.keyframes = index.CovisibleIds(*map.FindKeyFrame(candidate));
+  group.keyframes = CovisibleIds(map, *map.FindKeyFrame(candidate));
   const int frame = entries_.at(candidate).frame_index;
   for (const auto& [id, entry] : entries_) {
     if (std::abs(entry.frame_index - frame) <= kLoopGroupFrames) group.keyframes.push_back(id);
@@ -141,12 +155,11 @@ CandidateGroup LoopDetector::Group(const Map& map, const CovisibilityIndex& inde
   return group;
 }
 
-std::optional<LoopDetection> LoopDetector::Verify(const Map& map, const CovisibilityIndex& index,
-                                                  const KeyFrame& query,
+std::optional<LoopDetection> LoopDetector::Verify(const Map& map, const KeyFrame& query,
                                                   const PlaceCandidate& candidate) {
   const KeyFrame& match = *map.FindKeyFrame(candidate.id);
   std::vector<int> match_side = {match.id};
-  for (const auto& [id, shared] : index.Covisible(match)) {
+  for (const auto& [id, shared] : MostCovisibleFirst(map, match)) {
     if (static_cast<int>(match_side.size()) > kLoopVerificationNeighbours) break;
     match_side.push_back(id);
   }

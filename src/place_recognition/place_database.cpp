@@ -49,8 +49,10 @@ std::unordered_map<int, PlaceDatabase::Sums> PlaceDatabase::Accumulate(
     const auto postings = index_.find(word);
     if (postings == index_.end()) continue;
     for (const Posting& p : postings->second) {
-      if (exclude && exclude(p.id)) continue;
-      Sums& s = sums[p.id];
+      const auto [entry, first] = sums.try_emplace(p.id);
+      Sums& s = entry->second;
+      if (first && exclude) s.excluded = exclude(p.id);
+      if (s.excluded) continue;
       ++s.shared_words;
       // For L1-normalised non-negative vectors ScoreL1 is the sum of min(x, y) over the words.
       if (score) s.score += std::min(weight, p.weight);
@@ -63,7 +65,8 @@ std::vector<PlaceCandidate> PlaceDatabase::Query(const BowVector& query,
                                                  const PlaceQueryOptions& options) const {
   std::vector<PlaceCandidate> candidates;
   for (const auto& [id, s] : Accumulate(query, true, options.exclude)) {
-    if (s.shared_words < options.min_shared_words || s.score < options.min_score) continue;
+    if (s.excluded || s.shared_words < options.min_shared_words || s.score < options.min_score)
+      continue;
     candidates.push_back({id, std::min(1.0, s.score), s.shared_words});
   }
   std::sort(candidates.begin(), candidates.end(),
@@ -80,6 +83,7 @@ std::vector<PlaceCandidate> PlaceDatabase::SharedWords(
     const BowVector& query, const std::function<bool(int id)>& exclude) const {
   std::vector<PlaceCandidate> candidates;
   for (const auto& [id, s] : Accumulate(query, false, exclude)) {
+    if (s.excluded) continue;
     candidates.push_back({id, 0.0, s.shared_words});
   }
   std::sort(

@@ -74,16 +74,25 @@ std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& l
   return window;
 }
 
+std::vector<std::pair<int, int>> SharedPointCounts(const Map& map, const KeyFrame& keyframe,
+                                                   int min_shared) {
+  IdSet points(keyframe.points.size());
+  for (PointId id : keyframe.points) points.Insert(id);
+  std::vector<std::pair<int, int>> counts;
+  for (const KeyFrame* other : map.AllKeyFrames()) {  // ascending id
+    if (other->id == keyframe.id) continue;
+    const int shared = SharedPoints(*other, points);
+    if (shared >= std::max(min_shared, 1)) counts.emplace_back(other->id, shared);
+  }
+  return counts;
+}
+
 std::vector<int> KeyFramesAround(const Map& map, int keyframe_id, int size) {
   const KeyFrame* centre = map.FindKeyFrame(keyframe_id);
   if (centre == nullptr || size <= 0) return {};
-  IdSet centre_points(centre->points.size());
-  for (PointId id : centre->points) centre_points.Insert(id);
   Ranked covisible;
-  for (const KeyFrame* keyframe : NewestFirst(map)) {
-    if (keyframe->id == keyframe_id) continue;
-    const int shared = SharedPoints(*keyframe, centre_points);
-    if (shared >= kMinCovisiblePoints) covisible.emplace_back(shared, keyframe->id);
+  for (const auto& [id, shared] : SharedPointCounts(map, *centre, kMinCovisiblePoints)) {
+    covisible.emplace_back(shared, id);
   }
   SortBestFirst(&covisible);
   std::vector<int> around{keyframe_id};

@@ -10,11 +10,13 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "dslam/loop_closing/covisibility.h"
+#include "dslam/tracking/keyframe_window.h"
 #include "loop_closing/loop_scene.h"
 
 namespace dslam {
@@ -149,6 +151,26 @@ TEST_F(LoopDetectorTest, CovisibleKeyFramesAreNeverCandidates) {
   detector.Process(scene_.map, scene_.AddKeyFrame(600, T_world_camera, {{&room_, &second_lap_}}));
   ASSERT_EQ(detector.last_candidates().size(), 3u);
   EXPECT_GT(detector.last_candidates()[0].score, 0.5);
+}
+
+TEST_F(LoopDetectorTest, SharedPointCountsAgreeWithTheCovisibilityIndex) {
+  // The detector counts one keyframe's covisibility by a pass over the point lists
+  // (SharedPointCounts); the pose graph uses the index over every keyframe. Same counts.
+  for (int k = 0; k < kPerLap + kPerLap / 2; ++k) AddTourKeyFrame(k);
+  const CovisibilityIndex index(scene_.map);
+  int compared = 0;
+  for (const KeyFrame* keyframe : scene_.map.AllKeyFrames()) {
+    std::vector<std::pair<int, int>> expected = index.Covisible(*keyframe);
+    std::sort(expected.begin(), expected.end());  // by id, as SharedPointCounts
+    EXPECT_EQ(SharedPointCounts(scene_.map, *keyframe, 1), expected) << keyframe->id;
+    std::vector<std::pair<int, int>> at_least_20;
+    for (const auto& entry : expected) {
+      if (entry.second >= 20) at_least_20.push_back(entry);
+    }
+    EXPECT_EQ(SharedPointCounts(scene_.map, *keyframe, 20), at_least_20) << keyframe->id;
+    compared += static_cast<int>(expected.size());
+  }
+  EXPECT_GT(compared, 2 * kPerLap);  // the tour's neighbours share points
 }
 
 TEST_F(LoopDetectorTest, ErasedKeyFramesAreNotFound) {

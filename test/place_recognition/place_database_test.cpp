@@ -1,6 +1,8 @@
 #include "dslam/place_recognition/place_database.h"
 
+#include <map>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -69,6 +71,25 @@ TEST_F(PlaceDatabaseTest, RespectsExclusionThresholdsAndErase) {
   EXPECT_NEAR(database_.Query(query_, {1, 0.0, 1, {}})[0].score, 1.0, 1e-12);
   database_.Clear();
   EXPECT_TRUE(database_.Query(query_).empty());
+}
+
+TEST_F(PlaceDatabaseTest, ExcludeIsAskedOncePerImage) {
+  // The query's exclude may look the image up in a map: it is asked once per image sharing a
+  // word with the query, not once per shared word.
+  std::map<int, int> asked;
+  const auto exclude = [&asked](int id) { return ++asked[id], id % 2 == 0; };
+  const std::vector<PlaceCandidate> found = database_.Query(query_, {0, 0.0, 1, exclude});
+  const std::vector<PlaceCandidate> all = database_.Query(query_, {0, 0.0, 1, {}});
+  ASSERT_FALSE(asked.empty());
+  for (const auto& [id, times] : asked) EXPECT_EQ(times, 1) << id;
+  EXPECT_EQ(asked.size(), all.size());
+  size_t odd = 0;
+  for (const PlaceCandidate& c : all) odd += c.id % 2 != 0;
+  EXPECT_EQ(found.size(), odd);
+  for (const PlaceCandidate& c : found) EXPECT_NE(c.id % 2, 0);
+  asked.clear();
+  for (const PlaceCandidate& c : database_.SharedWords(query_, exclude)) EXPECT_NE(c.id % 2, 0);
+  for (const auto& [id, times] : asked) EXPECT_EQ(times, 1) << id;
 }
 
 TEST_F(PlaceDatabaseTest, SharedWordsCountsTheCommonWords) {

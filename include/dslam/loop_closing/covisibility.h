@@ -1,7 +1,10 @@
 #pragma once
-// Which keyframes of a keyframe map see the same map points (covisibility), for loop detection
-// (loop_detector.h): an index from each map point to the keyframes listing it (KeyFrame::points),
-// built from the window and the archive of one Map at one moment.
+// Which keyframes of a keyframe map see the same map points (covisibility) for every keyframe at
+// once, for the loop pose graph's covisibility edges (loop_correction.h): an index from each map
+// point to the keyframes listing it (KeyFrame::points), built from the window and the archive of
+// one Map at one moment. One keyframe's covisibility (loop detection, relocalisation) is
+// SharedPointCounts (tracking/keyframe_window.h): a pass over the point lists that allocates
+// nothing per point, where this index allocates a list per point.
 
 #include <cstddef>
 #include <unordered_map>

@@ -44,8 +44,6 @@
 
 namespace dslam {
 
-class CovisibilityIndex;
-
 /// Candidates a query keeps at most (the best scores).
 constexpr int kMaxLoopCandidates = 10;
 /// [frames] A candidate's group holds the database keyframes within this many frames of it.
@@ -122,9 +120,9 @@ class LoopDetector {
   std::vector<PlaceCandidate> Candidates(const Map& map, const KeyFrame& query,
                                          const BowVector& words,
                                          const std::vector<int>& covisible) const;
-  CandidateGroup Group(const Map& map, const CovisibilityIndex& index, int candidate) const;
-  std::optional<LoopDetection> Verify(const Map& map, const CovisibilityIndex& index,
-                                      const KeyFrame& query, const PlaceCandidate& candidate);
+  CandidateGroup Group(const Map& map, int candidate) const;
+  std::optional<LoopDetection> Verify(const Map& map, const KeyFrame& query,
+                                      const PlaceCandidate& candidate);
 
   std::shared_ptr<const Vocabulary> vocabulary_;
   LoopClosingConfig config_;

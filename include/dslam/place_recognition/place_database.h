@@ -59,6 +59,7 @@ class PlaceDatabase {
   struct Sums {
     double score = 0.0;
     int shared_words = 0;
+    bool excluded = false;  // the query's exclude said so (asked once per image)
   };
   std::unordered_map<int, Sums> Accumulate(const BowVector& query, bool score,
                                            const std::function<bool(int id)>& exclude) const;

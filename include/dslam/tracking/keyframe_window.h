@@ -5,6 +5,7 @@
 // (covisibility) or when the newest keyframe's camera is near theirs (a view the camera returns
 // to, whose points tracking has not matched yet, so that covisibility cannot find them).
 
+#include <utility>
 #include <vector>
 
 #include "dslam/tracking/map.h"
@@ -24,6 +25,13 @@ constexpr double kNearbyKeyFrameDeg = 20.0;
 /// that share no points with it (nearest first), the rest by the number of points shared with
 /// the newest keyframe (most first); places left go to the other list.
 std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& limits);
+
+/// (keyframe id, number of the points `keyframe` lists that it lists too) for every other
+/// keyframe of `map` (window and archive) sharing at least `min_shared` (>= 1) of them, ascending
+/// id. One pass over the map's keyframe point lists: for one keyframe's covisibility; every
+/// keyframe's at once is loop_closing's CovisibilityIndex.
+std::vector<std::pair<int, int>> SharedPointCounts(const Map& map, const KeyFrame& keyframe,
+                                                   int min_shared);
 
 /// Ids of the keyframe `keyframe_id` and of up to `size` - 1 keyframes of the map sharing the
 /// most points (at least kMinCovisiblePoints) with it, ascending; empty when it is not in the map.
