@@ -115,7 +115,7 @@ class StatusMonitor:
 
 HEADER = ("| min | VmRSS MB | VmHWM MB | received | processed | dropped | frames | tracking ms "
           "med / p95 | total ms med / p95 | latency ms med | states t / r / l / i | keyframes | "
-          "BA runs | map points | window max | CPU node / replay % | load |")
+          "BA runs | loops | map points | window max | CPU node / replay % | load |")
 SEPARATOR = "|" + "---|" * (HEADER.count("|") - 1)
 
 
@@ -125,11 +125,11 @@ def row(minute, rss, hwm, bucket, last, cpu):
         ("tracking_ms", 0.5), ("tracking_ms", 0.95), ("total_ms", 0.5), ("total_ms", 0.95),
         ("latency_ms", 0.5)]]
     return ("| %d | %.1f | %.1f | %d | %d | %d | %d | %.1f / %.1f | %.1f / %.1f | %.1f | "
-            "%d / %d / %d / %d | %d | %d | %d | %d | %.0f / %.0f | %.1f |" % (
+            "%d / %d / %d / %d | %d | %d | %d | %d | %d | %.0f / %.0f | %.1f |" % (
                 minute, rss, hwm, last.frames_received, last.frames_processed,
                 last.frames_dropped, len(bucket["tracking_ms"]),
                 *times_ms, s["tracking"], s["recovered"], s["lost"],
-                s["initialised"], bucket["keyframes"], bucket["backend_runs"], last.map_points,
+                s["initialised"], bucket["keyframes"], bucket["backend_runs"], last.loop_closures, last.map_points,
                 bucket["window"], cpu[0], cpu[1], os.getloadavg()[0]))
 
 

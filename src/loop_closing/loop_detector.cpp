@@ -109,12 +109,21 @@ BowVector LoopDetector::Words(const Map& map, const KeyFrame& keyframe) const {
   return vocabulary_->Transform(descriptors);
 }
 
+// `scored`: the database's scores of the query against the keyframes in it (one pass over the
+// inverted index; the ones sharing no word are not listed and score 0).
 double LoopDetector::MinScore(const KeyFrame& query, const BowVector& words,
-                              const std::vector<int>& covisible) const {
+                              const std::vector<int>& covisible,
+                              const std::vector<PlaceCandidate>& scored) const {
   double best = -1.0;
   for (int id : covisible) {
-    const auto entry = entries_.find(id);
-    if (entry != entries_.end()) best = std::max(best, ScoreL1(words, entry->second.words));
+    if (entries_.count(id) != 0) {
+      best = 0.0;
+      break;
+    }
+  }
+  for (const PlaceCandidate& c : scored) {
+    if (std::binary_search(covisible.begin(), covisible.end(), c.id))
+      best = std::max(best, c.score);
   }
   if (best < 0.0) {  // no covisible keyframe in the database: the previously processed one
     const auto previous = entries_.lower_bound(query.id);
@@ -128,17 +137,24 @@ std::vector<PlaceCandidate> LoopDetector::Candidates(const Map& map, const KeyFr
                                                      const BowVector& words,
                                                      const std::vector<int>& covisible) const {
   if (words.empty()) return {};
-  const int newest_frame = query.frame_index - config_.min_frames_apart;
-  PlaceQueryOptions options;
-  options.max_results = kMaxLoopCandidates;
-  options.min_score = MinScore(query, words, covisible);
-  options.exclude = [&](int id) {
-    const auto entry = entries_.find(id);
-    return id == query.id || entry == entries_.end() || entry->second.frame_index > newest_frame ||
-           std::binary_search(covisible.begin(), covisible.end(), id) ||
-           map.FindKeyFrame(id) == nullptr;
+  PlaceQueryOptions every;  // every keyframe in the database and the map, best score first
+  every.max_results = 0;
+  every.exclude = [&](int id) {
+    return id == query.id || entries_.count(id) == 0 || map.FindKeyFrame(id) == nullptr;
   };
-  return database_.Query(words, options);
+  const std::vector<PlaceCandidate> scored = database_.Query(words, every);
+  const double min_score = MinScore(query, words, covisible, scored);
+  const int newest_frame = query.frame_index - config_.min_frames_apart;
+  std::vector<PlaceCandidate> candidates;
+  for (const PlaceCandidate& c : scored) {
+    if (static_cast<int>(candidates.size()) >= kMaxLoopCandidates) break;
+    if (c.score < min_score || entries_.at(c.id).frame_index > newest_frame ||
+        std::binary_search(covisible.begin(), covisible.end(), c.id)) {
+      continue;
+    }
+    candidates.push_back(c);
+  }
+  return candidates;
 }
 
 CandidateGroup LoopDetector::Group(const Map& map, int candidate) const {

@@ -115,8 +115,8 @@ class LoopDetector {
   };
 
   BowVector Words(const Map& map, const KeyFrame& keyframe) const;
-  double MinScore(const KeyFrame& query, const BowVector& words,
-                  const std::vector<int>& covisible) const;
+  double MinScore(const KeyFrame& query, const BowVector& words, const std::vector<int>& covisible,
+                  const std::vector<PlaceCandidate>& scored) const;
   std::vector<PlaceCandidate> Candidates(const Map& map, const KeyFrame& query,
                                          const BowVector& words,
                                          const std::vector<int>& covisible) const;
