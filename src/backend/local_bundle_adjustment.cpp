@@ -4,13 +4,14 @@
 #include <cmath>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <ceres/ceres.h>
 
 #include "dslam/core/geometry.h"
 #include "dslam/core/stopwatch.h"
-#include "dslam/tracking/pose_optimizer.h"
+#include "local_ba_problem.h"
 
 namespace dslam {
 namespace {
@@ -25,63 +26,10 @@ constexpr int kMinKeyFramePoints = 10;
 // Levenberg-Marquardt iterations per round.
 constexpr int kMaxIterations = 10;
 
-// Paper Eq. rgbd_yik for keyframe k and point i: r = S (R_k p_i + t_k - y_ik), S^T S = C_ik^-1.
-// Parameters: quaternion of R_camera_world (x y z w), t_camera_world, p_world. Analytic
-// Jacobians, as the motion-only BA's residuals.
-class KeyFrameDepthResidual : public ceres::SizedCostFunction<3, 4, 3, 3> {
- public:
-  KeyFrameDepthResidual(const Eigen::Vector3d& y, const Eigen::Matrix3d& sqrt_information)
-      : y_(y), sqrt_information_(sqrt_information) {}
-
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override {
-    const Eigen::Map<const Eigen::Quaterniond> q(parameters[0]);
-    const Eigen::Map<const Eigen::Vector3d> t(parameters[1]);
-    const Eigen::Map<const Eigen::Vector3d> p(parameters[2]);
-    Eigen::Map<Eigen::Vector3d> r(residuals);
-    r = sqrt_information_ * (q * p + t - y_);
-    if (jacobians == nullptr) return true;
-    if (jacobians[0] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 3, 4, Eigen::RowMajor>> J_q(jacobians[0]);
-      J_q = sqrt_information_ * RotatedPointByQuaternion(q, p);
-    }
-    if (jacobians[1] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J_t(jacobians[1]);
-      J_t = sqrt_information_;
-    }
-    if (jacobians[2] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J_p(jacobians[2]);
-      J_p = sqrt_information_ * q.toRotationMatrix();
-    }
-    return true;
-  }
-
-  static std::unique_ptr<ceres::CostFunction> Create(const PointMeasurement& m) {
-    return std::make_unique<KeyFrameDepthResidual>(m.y_camera, SqrtInformation(m.covariance));
-  }
-
- private:
-  Eigen::Vector3d y_;
-  Eigen::Matrix3d sqrt_information_;
-};
-
-struct KeyFramePose {
-  Eigen::Quaterniond q_camera_world;
-  Eigen::Vector3d t_camera_world;
-};
-
-struct Measurement {
-  int keyframe = 0;  // index into the window
-  PointId point = -1;
-  const PointMeasurement* value = nullptr;
-};
-
-// The unknowns and the measurements between them.
-struct Window {
-  std::vector<KeyFramePose> poses;
-  std::unordered_map<PointId, Eigen::Vector3d> points;
-  std::vector<Measurement> measurements;
-};
+using local_ba::KeyFrameDepthResidual;
+using local_ba::KeyFramePose;
+using local_ba::Measurement;
+using local_ba::Window;
 
 // Verified static points measured in at least `min_keyframes` window keyframes, and the
 // measurements of them, in keyframe order (deterministic).
@@ -98,18 +46,21 @@ Window CollectWindow(const Map& map, int min_keyframes) {
     const KeyFrame& keyframe = map.keyframes()[k];
     const Eigen::Isometry3d& T = keyframe.measurements.T_camera_world;
     window.poses.push_back({Eigen::Quaterniond(T.rotation()), T.translation()});
+    window.frozen_pose.push_back(map.IsFrozenKeyFrame(keyframe.id));
     for (const auto& [id, m] : keyframe.measurements.by_point) {
       const auto it = seen_in.find(id);
       if (it == seen_in.end() || it->second < min_keyframes) continue;
       window.measurements.push_back({static_cast<int>(k), id, &m});
       window.points.emplace(id, map.Find(id)->p_world);
+      if (map.IsFrozenPoint(id)) window.frozen_points.insert(id);
     }
   }
   return window;
 }
 
 // Per window keyframe: whether the solve over the measurements flagged in `use` optimises its
-// pose: not among the oldest `fixed_keyframes`, and with at least kMinKeyFramePoints of them.
+// pose: not among the oldest `fixed_keyframes`, not frozen (window.frozen_pose), and with at
+// least kMinKeyFramePoints of them.
 std::vector<bool> FreeKeyFrames(const Window& window, const std::vector<bool>& use,
                                 int fixed_keyframes) {
   std::vector<int> per_keyframe(window.poses.size(), 0);
@@ -118,7 +69,8 @@ std::vector<bool> FreeKeyFrames(const Window& window, const std::vector<bool>& u
   }
   std::vector<bool> free(window.poses.size());
   for (size_t k = 0; k < free.size(); ++k) {
-    free[k] = static_cast<int>(k) >= fixed_keyframes && per_keyframe[k] >= kMinKeyFramePoints;
+    free[k] = static_cast<int>(k) >= fixed_keyframes && !window.frozen_pose[k] &&
+              per_keyframe[k] >= kMinKeyFramePoints;
   }
   return free;
 }
@@ -150,6 +102,10 @@ int SolveRound(const Config& full_config, const std::vector<bool>& use, Window* 
       problem.SetParameterBlockConstant(q);
       problem.SetParameterBlockConstant(t);
     }
+  }
+  for (PointId id : window->frozen_points) {
+    double* p = window->points.at(id).data();
+    if (problem.HasParameterBlock(p)) problem.SetParameterBlockConstant(p);
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_SCHUR;
@@ -223,7 +179,7 @@ void CarryUnoptimisedPoints(const Window& window, const std::vector<Eigen::Isome
     }
   }
   for (const auto& [id, k] : newest_keyframe) {
-    MapPoint* point = map->Find(id);
+    MapPoint* point = map->FindWritable(id);
     if (point != nullptr) point->p_world = correction[k] * point->p_world;
   }
 }
@@ -270,18 +226,23 @@ CorrectionSize LargestCorrection(const Window& window, const Map& map) {
   return largest;
 }
 
-// Writes poses and points back. Outlier measurements stay in their keyframes: they are the
-// evidence with which static point determination finds points that moved.
+// Writes poses and points back (frozen ones stay bitwise as they were). Outlier measurements
+// stay in their keyframes: they are the evidence with which static point determination finds
+// points that moved.
 void WriteBack(const Window& window, Map* map) {
   std::deque<KeyFrame>& keyframes = map->mutable_keyframes();
   std::vector<Eigen::Isometry3d> correction(keyframes.size());  // T_wc_new T_cw_old
   for (size_t k = 0; k < keyframes.size(); ++k) {
+    correction[k] = Eigen::Isometry3d::Identity();
+    if (window.frozen_pose[k]) continue;
     const Eigen::Isometry3d T_camera_world = OptimisedPose(window, k);
     correction[k] = T_camera_world.inverse() * keyframes[k].measurements.T_camera_world;
     keyframes[k].measurements.T_camera_world = T_camera_world;
     keyframes[k].T_world_camera = T_camera_world.inverse();
   }
-  for (const auto& [id, p_world] : window.points) map->Find(id)->p_world = p_world;
+  for (const auto& [id, p_world] : window.points) {
+    if (window.frozen_points.count(id) == 0) map->Find(id)->p_world = p_world;
+  }
   CarryUnoptimisedPoints(window, correction, map);
 }
 

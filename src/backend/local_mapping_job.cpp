@@ -41,7 +41,7 @@ void LocalMappingJob::Apply(Map* map) const {
   if (moved_keyframes()) {
     for (const KeyFrame& refined : window_.keyframes()) {
       KeyFrame* live = map->FindKeyFrame(refined.id);
-      if (live == nullptr) continue;
+      if (live == nullptr || map->IsFrozenKeyFrame(refined.id)) continue;
       live->T_world_camera = refined.T_world_camera;
       live->measurements.T_camera_world = refined.measurements.T_camera_world;
     }
@@ -53,7 +53,7 @@ void LocalMappingJob::Apply(Map* map) const {
 void LocalMappingJob::ApplyToPoints(Map* map, bool move_points) const {
   for (const auto& [id, before] : before_) {
     const MapPoint* refined = window_.Find(id);
-    MapPoint* live = map->Find(id);
+    MapPoint* live = map->FindWritable(id);  // frozen points stay as they are
     if (refined == nullptr || live == nullptr) continue;
     if (move_points && refined->p_world != before.p_world) {
       if (live->p_world == before.p_world) {

@@ -70,6 +70,7 @@ void Slam::QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* 
     record.id = keyframe.id;
     record.frame = frame;  // shallow: the images are shared, not copied
     record.T_world_camera = keyframe.T_world_camera;
+    record.temporary = map().frozen();  // localisation only: made beside the frozen loaded map
     record.points = keep_points ? result->points : std::move(result->points);
     events_.keyframes.push_back(std::move(record));
   }
@@ -202,11 +203,11 @@ void Slam::Reset(ResetMode mode) {
 }
 
 void Slam::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
-                      std::vector<KeyFrameRecord> loaded) {
+                      std::vector<KeyFrameRecord> loaded, LoadedMapUse use) {
   for (KeyFrameRecord& record : loaded) record.loaded = true;
   ResetOdometry(
       ResetMode::kNewWorld,
-      [&] { odometry_.StartInMap(std::move(map), std::move(places), timeout_s); },
+      [&] { odometry_.StartInMap(std::move(map), std::move(places), timeout_s, use); },
       std::move(loaded));
 }
 

@@ -92,9 +92,11 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
   if (result.static_component >= 0) {
     for (size_t i = 0; i < ids.size(); ++i) {
       if (!LosesMark(result.labels[i], config.backend.spd_unmark_isolated)) continue;
+      MapPoint* point = map->FindWritable(ids[i]);
+      if (point == nullptr) continue;  // frozen (a loaded map used for localisation only)
       // It stops driving motion estimation; the front end marks it again only after
       // tracking.remark_frames consecutive frames in which it looks static.
-      map->Find(ids[i])->Unmark(config.tracking.remark_frames);
+      point->Unmark(config.tracking.remark_frames);
       ++stats.unmarked;
     }
   }

@@ -30,6 +30,7 @@ void LoopClosing::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
       AddLoadedKeyFrame(record.id);
       continue;
     }
+    if (record.temporary) continue;  // localisation only: the loaded map stays as it is
     ProcessKeyFrame(record.id);
     const std::lock_guard<std::mutex> lock(mutex_);
     times_ms_.push_back(stopwatch.ElapsedMs());

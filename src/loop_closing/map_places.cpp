@@ -17,6 +17,8 @@ MapPlaces::MapPlaces(std::shared_ptr<const Vocabulary> vocabulary)
 std::vector<int> MapPlaces::Candidates(const Map& map, const FrameFeatures& features) {
   std::set<int> in_map;
   for (const KeyFrame* keyframe : map.AllKeyFrames()) {
+    // Localisation only: the places are the loaded (frozen) map's, not the temporary keyframes.
+    if (map.frozen() && !map.IsFrozenKeyFrame(keyframe->id)) continue;
     in_map.insert(keyframe->id);
     if (database_.Contains(keyframe->id)) continue;
     const cv::Mat descriptors = PointDescriptors(map, StaticMeasuredPoints(map, *keyframe));

@@ -76,13 +76,13 @@ std::vector<KeyFrameRecord> LoadedKeyFrameRecords(const KeyFrameMapFile& file,
 
 std::string StartInKeyFrameMap(KeyFrameMapFile file, std::shared_ptr<const PinholeCamera> camera,
                                std::shared_ptr<const Vocabulary> vocabulary,
-                               double localise_timeout_s, Slam* slam) {
+                               double localise_timeout_s, Slam* slam, LoadedMapUse use) {
   const std::string why = CheckCompatible(file, *camera, vocabulary->identity());
   if (!why.empty()) return why;
   std::vector<KeyFrameRecord> records = LoadedKeyFrameRecords(file, camera);
   slam->StartInMap(Map::FromContents(std::move(file.contents)),
                    std::make_shared<MapPlaces>(std::move(vocabulary)), localise_timeout_s,
-                   std::move(records));
+                   std::move(records), use);
   return "";
 }
 

@@ -22,27 +22,33 @@ void KeyFrameMapOutput::Attach(const Slam* slam) {
 }
 
 void KeyFrameMapOutput::Load(const std::string& path, std::shared_ptr<const PinholeCamera> camera,
-                             double timeout_s, Slam* slam) {
+                             double timeout_s, LoadedMapUse use, Slam* slam) {
   load_path_ = path;
   if (path.empty()) return;
+  const bool only = use == LoadedMapUse::kLocalisationOnly;
   try {
     KeyFrameMapFile file = LoadKeyFrameMap(path);
     loaded_keyframes_ = file.contents.keyframes.size();
     loaded_points_ = file.contents.points.size();
-    load_problem_ = StartInKeyFrameMap(std::move(file), camera, vocabulary_, timeout_s, slam);
+    if (only) localisation_map_ = std::make_shared<const KeyFrameMapFile>(file);  // to save
+    load_problem_ = StartInKeyFrameMap(std::move(file), camera, vocabulary_, timeout_s, slam, use);
+    if (!load_problem_.empty()) localisation_map_.reset();
   } catch (const KeyFrameMapError& e) {
     load_problem_ = e.what();
   }
   if (!load_problem_.empty()) {
-    std::fprintf(stderr, "dslam_run_dataset: keyframe map %s refused: %s; mapping from scratch\n",
-                 path.c_str(), load_problem_.c_str());
+    std::fprintf(stderr, "dslam_run_dataset: keyframe map %s refused: %s; mapping from scratch%s\n",
+                 path.c_str(), load_problem_.c_str(),
+                 only ? " (--localisation-only has no effect)" : "");
   }
   slam->WaitForBackEnd();  // the observers have the loaded keyframes before the first frame
 }
 
 void KeyFrameMapOutput::Save(const Slam& slam, const PinholeCamera& camera) {
   if (save_path_.empty()) return;
-  const KeyFrameMapFile file = KeyFrameMapOf(slam, camera, vocabulary_->identity(), keeper_.get());
+  const KeyFrameMapFile file =
+      localisation_map_ ? *localisation_map_
+                        : KeyFrameMapOf(slam, camera, vocabulary_->identity(), keeper_.get());
   SaveKeyFrameMap(save_path_, file);
   keyframes_ = file.contents.keyframes.size();
   points_ = file.contents.points.size();
@@ -56,12 +62,16 @@ void KeyFrameMapOutput::Print() const {
                 loaded_points_, load_path_.c_str());
   }
   if (save_path_.empty()) return;
-  std::printf("keyframe map: %zu keyframes, %zu points, images of %zu keyframes, %zu bytes -> %s\n",
-              keyframes_, points_, images_, bytes_, save_path_.c_str());
+  std::printf(
+      "keyframe map%s: %zu keyframes, %zu points, images of %zu keyframes, %zu bytes -> %s\n",
+      localisation_map_ ? " (localisation only: the loaded map unchanged)" : "", keyframes_,
+      points_, images_, bytes_, save_path_.c_str());
 }
 
 void KeyFrameMapOutput::AddTo(JsonObject* json) const {
-  if (!load_path_.empty()) json->AddBool("keyframe_map_loaded", load_problem_.empty());
+  if (load_path_.empty()) return;
+  json->AddBool("keyframe_map_loaded", load_problem_.empty());
+  json->AddBool("localisation_only", localisation_map_ != nullptr);
 }
 
 }  // namespace tools

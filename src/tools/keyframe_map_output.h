@@ -4,8 +4,9 @@
 // run's vocabulary (--vocabulary, default the committed one) and the colour and depth images of
 // every keyframe still in the map at the end (KeyFrameImageKeeper); and the run started in a
 // loaded keyframe map (StartInKeyFrameMap: no pose until it localises, a new map after
-// --localise-timeout-s). A file that cannot be read or does not fit the run is refused with the
-// reason and the run maps from scratch.
+// --localise-timeout-s), extended or, with --localisation-only, left as loaded: the saved map is
+// then the loaded file unchanged. A file that cannot be read or does not fit the run is refused
+// with the reason and the run maps from scratch (--localisation-only has no effect then).
 
 #include <memory>
 #include <string>
@@ -33,17 +34,19 @@ class KeyFrameMapOutput {
   void Attach(const Slam* slam);
 
   /// Starts `slam` in the keyframe map file at `path` (nothing when empty); `camera` is the
-  /// dataset's, `timeout_s` [s] the localisation timeout. A file that cannot be read or does not
-  /// fit is reported on stderr and `slam` starts from scratch. Call after Attach, before the
-  /// first frame.
+  /// dataset's, `timeout_s` [s] the localisation timeout, `use` what the run may do with the map.
+  /// A file that cannot be read or does not fit is reported on stderr and `slam` starts from
+  /// scratch. Call after Attach, before the first frame.
   void Load(const std::string& path, std::shared_ptr<const PinholeCamera> camera, double timeout_s,
-            Slam* slam);
-  /// Saves `slam`'s map with `camera` and the kept images; call after Slam::WaitForBackEnd.
-  /// Throws std::runtime_error when the file cannot be written.
+            LoadedMapUse use, Slam* slam);
+  /// Saves `slam`'s map with `camera` and the kept images, or, when the run localised only in a
+  /// loaded map, that map's file as it was loaded; call after Slam::WaitForBackEnd. Throws
+  /// std::runtime_error when the file cannot be written.
   void Save(const Slam& slam, const PinholeCamera& camera);
   /// One line each for the loaded and the saved map (nothing for neither).
   void Print() const;
-  /// Adds keyframe_map_loaded (true, false: refused, absent: none given).
+  /// Adds keyframe_map_loaded (true, false: refused, absent: none given) and, with it,
+  /// localisation_only (true: the run localised only in the loaded map, which stayed as loaded).
   void AddTo(JsonObject* json) const;
 
  private:
@@ -51,6 +54,8 @@ class KeyFrameMapOutput {
   std::shared_ptr<const Vocabulary> vocabulary_;
   std::shared_ptr<KeyFrameImageKeeper> keeper_;
   std::string load_problem_;  ///< why the loaded file was refused; "" when it was not
+  /// The loaded file when the run localises only in it (saved as it is); null otherwise.
+  std::shared_ptr<const KeyFrameMapFile> localisation_map_;
   size_t loaded_keyframes_ = 0, loaded_points_ = 0;
   size_t keyframes_ = 0, points_ = 0, images_ = 0, bytes_ = 0;
 };

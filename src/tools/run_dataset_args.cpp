@@ -19,7 +19,7 @@ int Usage() {
          "                         [--loop-closing on|off] [--loops OUT.txt] "
          "[--vocabulary FILE]\n"
          "                         [--save-keyframe-map OUT.bin] [--load-keyframe-map IN.bin]\n"
-         "                         [--localise-timeout-s S (10)]\n";
+         "                         [--localise-timeout-s S (10)] [--localisation-only]\n";
   return 2;
 }
 
@@ -32,6 +32,10 @@ bool Parse(int argc, char** argv, RunDatasetArgs* args) {
     }
     if (key == "--threads") {
       args->threads = true;
+      continue;
+    }
+    if (key == "--localisation-only") {
+      args->localisation_only = true;
       continue;
     }
     if (i + 1 >= argc) return false;
@@ -82,6 +86,13 @@ bool Parse(int argc, char** argv, RunDatasetArgs* args) {
       return false;
   }
   return !args->dataset.empty() && !args->trajectory.empty();
+}
+
+std::string CheckCombination(const RunDatasetArgs& args) {
+  if (args.localisation_only && args.load_keyframe_map.empty()) {
+    return "--localisation-only needs --load-keyframe-map (a map to localise in)";
+  }
+  return "";
 }
 
 }  // namespace tools

@@ -35,6 +35,9 @@ struct RunDatasetArgs {
   /// [s] --localise-timeout-s: without a frame localised in the loaded map this long after the
   /// first frame, a new map starts (Odometry::StartInMap)
   double localise_timeout_s = 10.0;
+  /// --localisation-only: track in the loaded map without changing it
+  /// (LoadedMapUse::kLocalisationOnly); needs --load-keyframe-map
+  bool localisation_only = false;
   int max_frames = -1;   ///< --max-frames: process only the first N frames; -1: all
   bool quiet = false;    ///< --quiet: no progress bar
   bool threads = false;  ///< --threads: the back end on its own thread (kThreaded)
@@ -49,6 +52,10 @@ int Usage();
 /// or --dataset or --trajectory is missing. Throws std::exception from std::stoi / std::stod when
 /// a number does not parse.
 bool Parse(int argc, char** argv, RunDatasetArgs* args);
+
+/// Why options that parsed cannot go together ("--localisation-only needs
+/// --load-keyframe-map"), or "" when they can.
+std::string CheckCombination(const RunDatasetArgs& args);
 
 }  // namespace tools
 }  // namespace dslam

@@ -230,6 +230,8 @@ int Run(const Args& args) {
   loops.Attach(&slam);
   keyframe_map.Attach(&slam);
   keyframe_map.Load(args.load_keyframe_map, dataset.camera_yaml().camera, args.localise_timeout_s,
+                    args.localisation_only ? dslam::LoadedMapUse::kLocalisationOnly
+                                           : dslam::LoadedMapUse::kExtend,
                     &slam);
   Outputs out;
   OpenOutputs(args, config, &out);
@@ -277,6 +279,11 @@ int main(int argc, char** argv) {
   } catch (const std::exception&) {  // a number that does not parse (std::stoi, std::stod)
   }
   if (!parsed) return dslam::tools::Usage();
+  const std::string combination = dslam::tools::CheckCombination(args);
+  if (!combination.empty()) {
+    std::cerr << "dslam_run_dataset: " << combination << "\n";
+    return dslam::tools::Usage();
+  }
   try {
     return Run(args);
   } catch (const std::exception& e) {

@@ -101,6 +101,30 @@ void LabelLeftOutPoints(const Map& map, const std::vector<PointMatch>& matches,
   }
 }
 
+// Applies `label` of frame `frame_index` to `point`'s marks (ApplyStaticLabels).
+void ApplyLabel(PointLabel label, const LabelRules& rules, int frame_index, MapPoint* point) {
+  switch (label) {
+    case PointLabel::kStatic:
+      point->isolated_frames = 0;
+      // Consistent with the static world again (e.g. wrongly unmarked, or stopped moving).
+      point->LookedStatic(rules.remark_frames);
+      if (point->marked && frame_index - point->created_frame >= rules.verify_frames) {
+        point->candidate = false;
+      }
+      break;
+    case PointLabel::kDynamic:
+      point->Unmark(0);
+      break;
+    case PointLabel::kIsolated:
+      point->static_streak = 0;
+      if (++point->isolated_frames >= rules.isolated_frames_to_unmark) point->marked = false;
+      break;
+    case PointLabel::kUndecided:
+    case PointLabel::kUnverified:
+      break;
+  }
+}
+
 }  // namespace
 
 FrontEndGraph BuildFrontEndGraph(const Map& map, const std::vector<PointMatch>& matches,
@@ -154,30 +178,12 @@ std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
   if (!front_end.ran || front_end.result.static_component < 0) return excluded;
   for (size_t g = 0; g < front_end.graph_match.size(); ++g) {
     const int m = front_end.graph_match[g];
-    MapPoint* point = map->Find(matches[m].id);
-    if (point == nullptr) continue;
-    switch (front_end.result.labels[g]) {
-      case PointLabel::kStatic:
-        point->isolated_frames = 0;
-        // Consistent with the static world again (e.g. wrongly unmarked, or stopped moving).
-        point->LookedStatic(rules.remark_frames);
-        if (point->marked && frame_index - point->created_frame >= rules.verify_frames) {
-          point->candidate = false;
-        }
-        break;
-      case PointLabel::kDynamic:
-        point->Unmark(0);
-        excluded[m] = true;
-        break;
-      case PointLabel::kIsolated:
-        excluded[m] = true;
-        point->static_streak = 0;
-        if (++point->isolated_frames >= rules.isolated_frames_to_unmark) point->marked = false;
-        break;
-      case PointLabel::kUndecided:
-      case PointLabel::kUnverified:
-        break;
-    }
+    if (map->Find(matches[m].id) == nullptr) continue;
+    const PointLabel label = front_end.result.labels[g];
+    excluded[m] = label == PointLabel::kDynamic || label == PointLabel::kIsolated;
+    // A frozen point (Map::Freeze) keeps its marks: its label only excludes it from this frame.
+    MapPoint* point = map->FindWritable(matches[m].id);
+    if (point != nullptr) ApplyLabel(label, rules, frame_index, point);
   }
   return excluded;
 }

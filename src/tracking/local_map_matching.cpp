@@ -83,7 +83,10 @@ std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& cand
   const ProjectedLocalMap projected =
       ProjectLocalMap(*map, candidates, features, camera, T_camera_world, search);
   if (search.count_visible) {
-    for (PointId id : projected.ids) ++map->Find(id)->times_visible;
+    for (PointId id : projected.ids) {
+      MapPoint* point = map->FindWritable(id);  // a frozen point's count stays as it was
+      if (point != nullptr) ++point->times_visible;
+    }
   }
   return ClaimLocalMapMatches(projected, features, feature_taken);
 }

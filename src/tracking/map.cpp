@@ -41,13 +41,22 @@ const KeyFrame& Map::AddKeyFrame(KeyFrame keyframe, const KeyFrameMapLimits& lim
   CountObservations(keyframe, +1);
   keyframes_.push_back(std::move(keyframe));
   SetWindow(SelectKeyFrameWindow(*this, limits), limits.recent_keyframes);
+  if (frozen_) {  // temporary keyframes live in the window only
+    EraseArchived(frozen_keyframes_end_, 0);
+    return keyframes_.back();
+  }
   const int max_keyframes =
       std::max(limits.max_keyframes, limits.recent_keyframes + limits.covisible_keyframes);
-  while (!archive_.empty() && static_cast<int>(num_keyframes()) > max_keyframes) {
-    CountObservations(archive_.begin()->second, -1);
-    archive_.erase(archive_.begin());
-  }
+  EraseArchived(std::numeric_limits<int>::min(), static_cast<size_t>(max_keyframes));
   return keyframes_.back();
+}
+
+void Map::EraseArchived(int first_id, size_t max_keyframes) {
+  auto it = archive_.lower_bound(first_id);
+  while (it != archive_.end() && num_keyframes() > max_keyframes) {
+    CountObservations(it->second, -1);
+    it = archive_.erase(it);
+  }
 }
 
 void Map::CountObservations(const KeyFrame& keyframe, int delta) {
@@ -101,7 +110,7 @@ bool Map::IsRedundant(const KeyFrame& keyframe) const {
 void Map::EraseRedundant(const std::vector<int>& ids) {
   for (int id : ids) {
     const auto it = archive_.find(id);
-    if (it == archive_.end() || !IsRedundant(it->second)) continue;
+    if (it == archive_.end() || IsFrozenKeyFrame(id) || !IsRedundant(it->second)) continue;
     CountObservations(it->second, -1);
     archive_.erase(it);
   }
@@ -135,6 +144,10 @@ int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
   int removed = 0;
   for (auto it = points_.begin(); it != points_.end();) {
     const MapPoint& p = it->second;
+    if (IsFrozenPoint(p.id)) {
+      ++it;
+      continue;
+    }
     const int keep_since = static_seen_since_frame >= 0 && p.IsVerifiedStatic()
                                ? std::min(oldest_frame_to_keep, static_seen_since_frame)
                                : oldest_frame_to_keep;
@@ -157,6 +170,9 @@ Map Map::WindowCopy() const {
   copy.recent_in_window_ = recent_in_window_;
   copy.next_point_id_ = next_point_id_;
   copy.next_keyframe_id_ = next_keyframe_id_;
+  copy.frozen_ = frozen_;
+  copy.frozen_keyframes_end_ = frozen_keyframes_end_;
+  copy.frozen_points_end_ = frozen_points_end_;
   const auto add = [&](PointId id) {
     const auto it = points_.find(id);
     if (it != points_.end()) copy.points_.emplace(id, it->second);
@@ -236,6 +252,7 @@ void Map::MoveKeyFramesAndPoints(
     int min_created_frame, const Eigen::Isometry3d* before_first) {
   std::map<int, Eigen::Isometry3d> by_frame;  // frame index of a moved keyframe -> its correction
   const auto move = [&](KeyFrame* keyframe) {
+    if (IsFrozenKeyFrame(keyframe->id)) return;
     const std::optional<Eigen::Isometry3d> T_new_old = correction_of(*keyframe);
     if (!T_new_old) return;
     keyframe->T_world_camera = *T_new_old * keyframe->T_world_camera;
@@ -246,7 +263,7 @@ void Map::MoveKeyFramesAndPoints(
   for (auto& entry : archive_) move(&entry.second);
   for (auto& entry : points_) {
     MapPoint& point = entry.second;
-    if (point.created_frame < min_created_frame) continue;
+    if (point.created_frame < min_created_frame || IsFrozenPoint(point.id)) continue;
     auto made = by_frame.upper_bound(point.created_frame);
     if (made == by_frame.begin() && before_first == nullptr) continue;
     const Eigen::Isometry3d& T_new_old =
@@ -262,6 +279,7 @@ void Map::Clear() {
   keyframes_.clear();
   archive_.clear();
   recent_in_window_ = 0;
+  frozen_ = false;
 }
 
 }  // namespace dslam

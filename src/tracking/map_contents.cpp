@@ -1,5 +1,6 @@
-// Map::Contents, Map::FromContents and Map::SetWindowTo: a keyframe map as plain lists and back
-// (a saved keyframe map), and the window a tracker starting in a loaded map begins with.
+// Map::Contents, Map::FromContents, Map::SetWindowTo and Map::Freeze: a keyframe map as plain
+// lists and back (a saved keyframe map), the window a tracker starting in a loaded map begins
+// with, and a loaded map frozen for localisation only.
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -58,5 +59,13 @@ void Map::SetWindowTo(const std::vector<int>& ids, int recent) {
   const int size = static_cast<int>(present.size());
   MoveWindow(present, recent < 0 ? size : std::min(recent, size));
 }
+
+void Map::Freeze() {
+  frozen_ = true;
+  frozen_keyframes_end_ = next_keyframe_id_;
+  frozen_points_end_ = next_point_id_;
+}
+
+MapPoint* Map::FindWritable(PointId id) { return IsFrozenPoint(id) ? nullptr : Find(id); }
 
 }  // namespace dslam

@@ -33,7 +33,7 @@ void Odometry::Reset(ResetMode mode) {
   weak_episode_.End();
   weak_since_keyframe_ = false;
   places_.reset();
-  localising_ = localise_started_ = false;
+  localising_ = localise_started_ = localisation_only_ = false;
   initialised_ = false;
   frame_index_ = lost_frames_ = 0;
 }
@@ -63,9 +63,11 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
     result.times.initial_pose_ms = stage.Restart();
     if (!have_initial_pose) return NotLocalised(&current, std::move(result));
   } else {
-    // After lost_frames_before_reset lost frames the map is re-initialised, unless this frame
-    // can still be relocalised in it (step 3): e.g. a covered lens, a long gap in the input.
-    if (!initialised_ && !CanRelocalise()) return Initialise(&current, std::move(result));
+    // After lost_frames_before_reset lost frames the map is re-initialised (never in
+    // localisation-only mode), unless this frame can still be relocalised in it (step 3).
+    if (!initialised_ && !CanRelocalise() && MayInitialise()) {
+      return Initialise(&current, std::move(result));
+    }
     have_initial_pose = TrackInitialPose(&current, &result);
   }
   stage.Restart();
@@ -129,7 +131,7 @@ bool Odometry::TrackInitialPose(Current* current, FrameResult* result) {
        RematchAndSolveInitialPose(current, T_camera_world_predicted,
                                   config_.tracking.wide_search_radius_px, result->frame_index)) ||
       Relocalise(current, result->frame_index) ||
-      RelocaliseAtNamedPlaces(current, result->frame_index, map_places_.get());
+      RelocaliseAtNamedPlaces(current, result->frame_index, LostFramePlaces());
   result->times.initial_pose_ms = stage.Restart();
   return have_initial_pose;
 }
@@ -172,7 +174,7 @@ bool Odometry::CanRelocalise() const {
 }
 
 FrameResult Odometry::Untracked(Current* current, FrameResult result, const char* why) {
-  if (initialised_) return Lost(current, std::move(result), why);
+  if (initialised_ || !MayInitialise()) return Lost(current, std::move(result), why);
   current->matches.clear();  // points of the map that Initialise replaces
   return Initialise(current, std::move(result));
 }
@@ -209,7 +211,7 @@ bool Odometry::BeginFrame(const RgbdFrame& frame, FrameResult* result) {
     Reset(ResetMode::kNewWorld);
     reset = true;
     result->message = "time went backwards: reset";
-  } else if (localising_ && localise_started_ &&
+  } else if (localising_ && localise_started_ && !localisation_only_ &&
              frame.stamp_s - localise_start_s_ > localise_timeout_s_) {
     Reset(ResetMode::kNewWorld);
     reset = true;

@@ -15,7 +15,8 @@ constexpr size_t kPlacesTriedPerFrame = 3;
 
 }  // namespace
 
-void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s) {
+void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
+                          LoadedMapUse use) {
   if (places == nullptr) throw std::invalid_argument("Odometry::StartInMap: no place lookup");
   if (!(timeout_s > 0.0)) throw std::invalid_argument("Odometry::StartInMap: timeout must be > 0");
   if (!config_.tracking.relocalisation) {
@@ -27,6 +28,8 @@ void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double t
     newest_frame = std::max(newest_frame, keyframe->frame_index);
   }
   map_ = std::move(map);
+  localisation_only_ = use == LoadedMapUse::kLocalisationOnly;
+  if (localisation_only_) map_.Freeze();
   frame_index_ = newest_frame + 1;
   places_ = std::move(places);
   localise_timeout_s_ = timeout_s;
@@ -36,9 +39,14 @@ void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double t
 bool Odometry::LocaliseInLoadedMap(Current* current, int frame_index) {
   if (!RelocaliseAtNamedPlaces(current, frame_index, places_.get())) return false;
   localising_ = false;
-  places_.reset();
+  if (!localisation_only_) places_.reset();
   initialised_ = true;
   return true;
+}
+
+PlaceLookup* Odometry::LostFramePlaces() const {
+  if (map_places_ != nullptr) return map_places_.get();
+  return localisation_only_ ? places_.get() : nullptr;
 }
 
 bool Odometry::RelocaliseAtNamedPlaces(Current* current, int frame_index, PlaceLookup* places) {

@@ -183,15 +183,15 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
   previous_.T_camera_world = current.T_camera_world;
   last_tracked_.clear();
   for (const PointMatch& match : current.matches) {
-    MapPoint* point = map_.Find(match.id);
+    if (map_.Find(match.id) == nullptr) continue;
+    last_tracked_.push_back(match.id);
+    const auto& measurement = current.features.features[match.feature].measurement;
+    if (measurement) previous_.by_point.emplace(match.id, *measurement);
+    MapPoint* point = map_.FindWritable(match.id);  // a frozen point stays as it was
     if (point == nullptr) continue;
     ++point->times_found;
     point->last_seen_frame = frame_index_ - 1;
-    last_tracked_.push_back(match.id);
-    const auto& measurement = current.features.features[match.feature].measurement;
-    if (!measurement) continue;
-    previous_.by_point.emplace(match.id, *measurement);
-    if (!point->marked) {
+    if (measurement && !point->marked) {
       // Unmarked points follow their object (Sec. V-C, update): matching keeps claiming its
       // features, so they do not come back as new marked points.
       const PointMeasurement in_world = Transformed(*measurement, T_world_camera);
@@ -227,7 +227,7 @@ bool Odometry::DrovePose(const Current& current, size_t m) {
 void Odometry::FuseStaticPoints(const Current& current) {
   const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
   for (size_t m = 0; m < current.matches.size(); ++m) {
-    MapPoint* point = map_.Find(current.matches[m].id);
+    MapPoint* point = map_.FindWritable(current.matches[m].id);  // frozen points stay
     const auto& measurement = current.features.features[current.matches[m].feature].measurement;
     if (point == nullptr || !measurement || !point->IsVerifiedStatic()) continue;
     if (!DrovePose(current, m)) continue;

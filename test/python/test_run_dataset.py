@@ -1,7 +1,8 @@
 """Tests of dslam_run_dataset's command line: the back end's execution mode (--threads), the
 fixed feeding rate (--rate) and what the summary JSON and status CSV report about them, on a
 short synthetic sequence rendered by dslam_synth; the moving objects (--objects) on their own
-thread with --threads, on a short walking sequence; the keyframe map file (--save-keyframe-map)."""
+thread with --threads, on a short walking sequence; the keyframe map file (--save-keyframe-map),
+and a run that localises only in a loaded one (--localisation-only)."""
 
 import csv
 import json
@@ -156,6 +157,29 @@ class RunDatasetCliTest(unittest.TestCase):
             self.assertGreater(keyframes, 1, name)
             self.assertEqual(images, keyframes, name)  # the map keeps every keyframe of 30 frames
             self.assertFalse([f for f in os.listdir(self.tmp) if ".tmp-" in f])
+
+    def test_localisation_only_saves_the_loaded_map_unchanged(self):
+        """--localisation-only with --load-keyframe-map: the map saved at the end is the loaded
+        file, byte for byte, and the summary says so; without --load-keyframe-map the option is
+        a usage error that names it."""
+        loaded = os.path.join(self.tmp, "lo_loaded.bin")
+        code, _, _, _ = self.run_tool("lo_first", "--save-keyframe-map", loaded)
+        self.assertEqual(code, 0)
+        saved = os.path.join(self.tmp, "lo_saved.bin")
+        code, summary, _, _ = self.run_tool("lo_second", "--load-keyframe-map", loaded,
+                                            "--localisation-only", "--save-keyframe-map", saved)
+        self.assertEqual(code, 0)
+        self.assertTrue(summary["keyframe_map_loaded"])
+        self.assertTrue(summary["localisation_only"])
+        self.assertGreater(summary["frames_with_pose"], FRAMES // 2)
+        with open(loaded, "rb") as a, open(saved, "rb") as b:
+            self.assertEqual(a.read(), b.read())
+        usage = subprocess.run(
+            [find_tool("dslam_run_dataset"), "--dataset", self.sequence, "--trajectory",
+             os.path.join(self.tmp, "lo_bad.txt"), "--localisation-only"],
+            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, universal_newlines=True)
+        self.assertEqual(usage.returncode, 2)
+        self.assertIn("--localisation-only needs --load-keyframe-map", usage.stderr)
 
     def test_bad_rate_is_a_usage_error(self):
         for value in ["0", "-5", "fast"]:

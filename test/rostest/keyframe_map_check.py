@@ -4,7 +4,10 @@ static_room bag and saves its keyframe map with save_keyframe_map (refused for a
 write); a second node started with ~keyframe_map on that file gets frames 30-59: its status says
 "localising" until a frame is relocalised in the loaded map, after which its saved poses are in
 the first node's world (the first frame's camera), near the ground truth expressed there without
-any alignment, and its map extends the loaded one."""
+any alignment, and its map extends the loaded one. A third node with ~localisation_only gets the
+same frames: it never starts a map of its own, and its save_keyframe_map writes the loaded file
+byte for byte; without ~keyframe_map, ~localisation_only stops the node at start with an error
+naming it."""
 
 import os
 import signal
@@ -46,13 +49,34 @@ class KeyFrameMapTest(unittest.TestCase):
         self.assertTrue(result.success, result.message)
         self.assertGreater(result.keyframes, 1)
         rospy.loginfo("keyframe_map_check: %s", result.message)
-        second = subprocess.Popen(["roslaunch", "dslam", "dslam.launch", "ns:=dslam_loaded",
-                                   "manager:=loaded_manager", "keyframe_map:=" + saved])
+        nodes = [subprocess.Popen(["roslaunch", "dslam", "dslam.launch", "ns:=" + ns,
+                                   "manager:=" + ns + "_manager", "keyframe_map:=" + saved,
+                                   "localisation_only:=" + only])
+                 for ns, only in (("dslam_loaded", "false"), ("dslam_only", "true"))]
         try:
+            rec = Recorder()
+            rec.subscribe("/dslam_only/status", FrameStatus, "only_status")
+            rospy.wait_for_service("/dslam_only/save_trajectory", timeout=30.0)
             self.check_second_node(folder, bag, work, result.keyframes)
+            self.check_localisation_only_node(rec, work, saved)
         finally:
-            second.send_signal(signal.SIGINT)
-            second.wait(timeout=30)
+            for node in nodes:
+                node.send_signal(signal.SIGINT)
+            for node in nodes:
+                node.wait(timeout=30)
+
+    def check_localisation_only_node(self, rec, work, saved):
+        states = [s.state for s in rec.messages("only_status")]
+        rospy.loginfo("keyframe_map_check: localisation only: states %s", states)
+        self.assertIn("tracking", states)
+        self.assertNotIn("initialised", states, "the localisation-only node started a map")
+        path = os.path.join(work, "only.kfm")
+        result = rospy.ServiceProxy("/dslam_only/save_keyframe_map", SaveKeyFrameMap)(path)
+        self.assertTrue(result.success, result.message)
+        self.assertTrue(result.message.startswith("localisation only: the loaded map unchanged"),
+                        result.message)
+        with open(saved, "rb") as loaded, open(path, "rb") as written:
+            self.assertEqual(loaded.read(), written.read())
 
     def check_second_node(self, folder, bag, work, saved_keyframes):
         rec = Recorder()
@@ -83,6 +107,13 @@ class KeyFrameMapTest(unittest.TestCase):
             os.path.join(work, "extended.kfm"))
         self.assertTrue(extended.success, extended.message)
         self.assertGreaterEqual(extended.keyframes, saved_keyframes)
+
+    def test_localisation_only_without_a_map_is_refused(self):
+        run = subprocess.run(["rosrun", "dslam", "dslam_odometry_node", "__name:=only_no_map",
+                              "_localisation_only:=true"], stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, timeout=60, universal_newlines=True)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("~localisation_only is true but ~keyframe_map is empty", run.stdout)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 // Odometry::StartInMap without the place recognition of loop_closing: a PlaceLookup that names a
-// given keyframe, or none, on a short static_room sequence rendered in-process.
+// given keyframe, or none, on a short static_room sequence rendered in-process; with
+// LoadedMapUse::kLocalisationOnly, the run that never leaves the loaded map.
 #include <stdexcept>
 #include <string>
 
@@ -7,6 +8,7 @@
 
 #include "dslam/tracking/odometry.h"
 #include "support/rendered_sequence.h"
+#include "support/textured_frame.h"
 
 namespace dslam {
 namespace {
@@ -76,6 +78,48 @@ TEST(OdometryLocalisation, WithoutAPlaceTheTimeoutStartsANewWorld) {
   EXPECT_TRUE(timed_out.T_world_camera.isApprox(Eigen::Isometry3d::Identity()));
   EXPECT_FALSE(odometry.localising());
   EXPECT_TRUE(odometry.ProcessFrame(room.frames[29]).has_pose);
+}
+
+TEST(OdometryLocalisation, LocalisationOnlyHasNoTimeout) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  Odometry odometry{Config()};
+  odometry.StartInMap(MapOfFirstFrames(20), std::make_shared<FixedPlaces>(std::vector<int>{}), 0.25,
+                      LoadedMapUse::kLocalisationOnly);
+  EXPECT_TRUE(odometry.localisation_only());
+  for (int i = 20; i < kFrames; ++i) {  // up to 0.63 s after frame 20
+    const FrameResult result = odometry.ProcessFrame(room.frames[i]);
+    EXPECT_FALSE(result.reset) << i;
+    EXPECT_EQ(result.state, TrackingState::kLocalising) << i;
+  }
+  EXPECT_TRUE(odometry.localising());
+}
+
+// Localised at frame 20, then an unrelated view (random blocks at 2 m) for longer than
+// tracking.lost_frames_before_reset frames, then the room again at frame 33.
+TEST(OdometryLocalisation, LocalisationOnlyStaysLostWhereExtendingReinitialises) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  for (const LoadedMapUse use : {LoadedMapUse::kExtend, LoadedMapUse::kLocalisationOnly}) {
+    const bool only = use == LoadedMapUse::kLocalisationOnly;
+    Odometry odometry{Config()};
+    odometry.StartInMap(MapOfFirstFrames(20), std::make_shared<FixedPlaces>(std::vector<int>{0}),
+                        5.0, use);
+    ASSERT_TRUE(odometry.ProcessFrame(room.frames[20]).has_pose) << only;
+    int initialised = 0;
+    for (int i = 21; i < 33; ++i) {
+      RgbdFrame elsewhere = test::TexturedFrame(*room.frames[i].camera, 1, 2.0);
+      elsewhere.stamp_s = room.frames[i].stamp_s;
+      const FrameResult result = odometry.ProcessFrame(elsewhere);
+      initialised += result.state == TrackingState::kInitialised ? 1 : 0;
+      if (only) EXPECT_EQ(result.state, TrackingState::kLost) << i;
+    }
+    EXPECT_EQ(initialised > 0, !only);  // extending: a new map of the blocks
+    if (!only) continue;
+    const FrameResult back = odometry.ProcessFrame(room.frames[33]);
+    ASSERT_TRUE(back.has_pose);
+    const Eigen::Isometry3d truth =
+        room.groundtruth[0].T_world_camera.inverse() * room.groundtruth[33].T_world_camera;
+    EXPECT_LT((back.T_world_camera.translation() - truth.translation()).norm(), 0.01);
+  }
 }
 
 TEST(OdometryLocalisation, StartInMapRefusesWhatCannotLocalise) {

@@ -31,6 +31,10 @@ struct KeyFrameRecord {
   /// earlier run, not by this one's odometry (loop closing enters it in its place database
   /// without searching a loop for it).
   bool loaded = false;
+  /// Made while the odometry localises only in a loaded map (LoadedMapUse::kLocalisationOnly):
+  /// the map erases it once it leaves the window (Map::Freeze), and loop closing neither enters it
+  /// in its place database nor searches a loop for it.
+  bool temporary = false;
 };
 
 /// Pose of a keyframe of the current window.

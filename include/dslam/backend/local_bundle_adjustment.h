@@ -5,12 +5,14 @@
 //
 // Only verified static points (marked, not candidates) measured in at least 2 keyframes enter.
 // The oldest `backend.ba_fixed_keyframes` keyframes, and keyframes with fewer than 10 such points,
-// keep their poses. Two rounds of at most 10 iterations, as in ORB-SLAM2's LocalBundleAdjustment:
-// Levenberg-Marquardt robust by the Huber width `pose.huber_delta_depth` (the motion-only BA's),
-// then the measurements whose squared Mahalanobis error exceeds `pose.chi2_depth` are left out and
-// the rest are optimised again. Fewer than 2 window keyframes: nothing runs. Measurements stay in
-// their keyframes: static point determination compares them. Points measured in the window but not
-// optimised move with the newest keyframe that measured them.
+// keep their poses; frozen keyframes and points (Map::Freeze: a loaded map used for localisation
+// only) are constants of the problem and are not written back. Two rounds of at most 10 iterations,
+// as in ORB-SLAM2's LocalBundleAdjustment: Levenberg-Marquardt robust by the Huber width
+// `pose.huber_delta_depth` (the motion-only BA's), then the measurements whose squared Mahalanobis
+// error exceeds `pose.chi2_depth` are left out and the rest are optimised again. Fewer than 2
+// window keyframes: nothing runs. Measurements stay in their keyframes: static point determination
+// compares them. Points measured in the window but not optimised move with the newest keyframe that
+// measured them.
 //
 // Safeguards against points that are marked but move (a person who stood still long enough to
 // be verified): measurements inconsistent with the front end's poses and map (chi-square with

@@ -29,7 +29,7 @@ class LocalMappingJob {
   void Run(const Config& config);
 
   /// Writes the run's results to `map`, which tracking may have changed since the copy, for the
-  /// keyframes and points still in it:
+  /// keyframes and points still in it and not frozen (Map::Freeze):
   /// - keyframe poses of the copied window; keyframes made since the copy, and the points they
   ///   made, move rigidly with the window's newest keyframe (correction());
   /// - positions of the points the run moved: the run's position where tracking left the point

@@ -110,9 +110,12 @@ class Slam {
   /// a new world after `timeout_s` [s] without). The observers then receive `loaded` (keyframes
   /// of `map` with their images, flagged KeyFrameRecord::loaded) after the reset, as Reset's
   /// events are delivered: the static map fuses them, loop closing enters them in its database.
-  /// Throws std::invalid_argument as StartInMap.
+  /// With LoadedMapUse::kLocalisationOnly the loaded map stays as loaded (Odometry::StartInMap)
+  /// and the keyframes made later reach the observers as KeyFrameRecord::temporary. Throws
+  /// std::invalid_argument as StartInMap.
   void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
-                  std::vector<KeyFrameRecord> loaded = {});
+                  std::vector<KeyFrameRecord> loaded = {},
+                  LoadedMapUse use = LoadedMapUse::kExtend);
   /// Between StartInMap and the first frame localised in its map (Odometry::localising).
   bool Localising() const;
   /// Place recognition over the whole keyframe map for lost frames (Odometry::SetPlaceLookup);

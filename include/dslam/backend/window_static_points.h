@@ -22,9 +22,9 @@
 namespace dslam {
 
 /// Runs Algorithm 1 on the window of `map` for its newest keyframe and unmarks the points found
-/// moving (see the top of this file). Uses config.static_points for the test and config.backend
-/// for the window. Deterministic. Returns what it did (WindowStaticPointsStats,
-/// tracking/backend_status.h).
+/// moving (see the top of this file), but for frozen ones (Map::Freeze), which keep their marks.
+/// Uses config.static_points for the test and config.backend for the window. Deterministic. Returns
+/// what it did (WindowStaticPointsStats, tracking/backend_status.h).
 WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map* map);
 
 }  // namespace dslam

@@ -3,7 +3,9 @@
 // looks for a place seen before (LoopDetector: words of verified static points, consistency over
 // consecutive keyframes, 3D-3D verification on static points only), and for a verified loop
 // optimises the keyframe map's pose graph (loop_correction.h) and moves the keyframes and their
-// points (Slam::CorrectKeyFrames), which carries the correction to the current pose.
+// points (Slam::CorrectKeyFrames), which carries the correction to the current pose. Temporary
+// keyframes (KeyFrameRecord::temporary: a run that localises only in a loaded map) are left
+// out: neither entered in the database nor searched, so no loop moves the loaded map.
 //
 // Threads: Slam calls OnKeyFrames without holding its map lock (keyframe_observer.h): on its
 // back-end thread in threaded mode, on the caller's in synchronous mode. Detection and the graph's

@@ -27,7 +27,8 @@ class MapPlaces : public PlaceLookup {
 
   /// The best-scoring keyframes of `map` for `features`, best first. The database is filled at
   /// the first call with every keyframe of `map`, takes keyframes added since at later calls and
-  /// drops those the map erased (it stays as bounded as the map).
+  /// drops those the map erased (it stays as bounded as the map). Of a frozen map (Map::Freeze)
+  /// only the frozen keyframes enter.
   std::vector<int> Candidates(const Map& map, const FrameFeatures& features) override;
 
   /// Keyframes in the database.

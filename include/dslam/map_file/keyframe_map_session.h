@@ -53,10 +53,13 @@ std::vector<KeyFrameRecord> LoadedKeyFrameRecords(const KeyFrameMapFile& file,
 
 /// Starts `slam` in the map of `file` when CheckCompatible(file, *camera,
 /// vocabulary->identity()) passes: Slam::StartInMap with MapPlaces over `vocabulary`, timeout
-/// `localise_timeout_s` [s] and LoadedKeyFrameRecords. Returns "" then; otherwise why the file
-/// does not fit this run, and `slam` is unchanged. Throws std::invalid_argument as StartInMap.
+/// `localise_timeout_s` [s], LoadedKeyFrameRecords and `use` (LoadedMapUse::kLocalisationOnly:
+/// the map stays as loaded; a save should then write `file` itself). Returns "" then; otherwise
+/// why the file does not fit this run, and `slam` is unchanged. Throws std::invalid_argument as
+/// StartInMap.
 std::string StartInKeyFrameMap(KeyFrameMapFile file, std::shared_ptr<const PinholeCamera> camera,
                                std::shared_ptr<const Vocabulary> vocabulary,
-                               double localise_timeout_s, Slam* slam);
+                               double localise_timeout_s, Slam* slam,
+                               LoadedMapUse use = LoadedMapUse::kExtend);
 
 }  // namespace dslam

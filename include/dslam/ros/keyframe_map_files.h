@@ -1,17 +1,17 @@
 #pragma once
 // The node's keyframe map files (issue 34): the map of ~keyframe_map loaded at start and started
-// in at the first frame (its camera is known only then) and again after each reset; the service
-// save_keyframe_map and the save on shutdown (~save_keyframe_map_on_exit); the keyframe images
-// kept for saving (~keyframe_map_images). The file handling itself is map_file's
-// (keyframe_map_session.h), shared with dslam_run_dataset.
+// in at the first frame (its camera is known only then) and again after each reset, extended or,
+// with ~localisation_only, left as loaded (LoadedMapUse); the service save_keyframe_map and the
+// save on shutdown (~save_keyframe_map_on_exit), which with ~localisation_only write the loaded
+// file unchanged; the keyframe images kept for saving (~keyframe_map_images). The file handling
+// itself is map_file's (keyframe_map_session.h), shared with dslam_run_dataset.
 //
 // Threads: BeforeFrame, AfterFrame and AfterReset are called by the worker thread only; the
 // service runs on a ROS callback thread and reads the map through Slam (its map lock) and the
-// camera under this object's own mutex, never holding both.
+// camera and the loaded file under this object's own mutex, never holding both.
 
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +30,8 @@ class KeyFrameMapFiles {
  public:
   /// Reads config.keyframe_map (a file that cannot be read is reported and left out: the node
   /// maps from scratch) and advertises save_keyframe_map on `nh`. `vocabulary` is the node's.
+  /// Throws std::invalid_argument naming ~localisation_only when it is set without
+  /// ~keyframe_map.
   KeyFrameMapFiles(ros::NodeHandle& nh, const NodeConfig& config,
                    std::shared_ptr<const Vocabulary> vocabulary);
 
@@ -43,7 +45,8 @@ class KeyFrameMapFiles {
   void BeforeFrame(const std::shared_ptr<const PinholeCamera>& camera);
   /// After Slam::ProcessFrame (worker thread): a reset of the odometry (time went backwards)
   /// makes the next frame start in the loaded map again, unless the frame was still localising
-  /// (the reset is then the localisation's timeout, and mapping goes on from scratch).
+  /// without ~localisation_only (the reset is then the localisation's timeout, and mapping goes
+  /// on from scratch).
   void AfterFrame(const FrameResult& result, bool was_localising);
   /// The reset service reset the odometry (worker thread): the next frame starts in the loaded
   /// map again.
@@ -53,17 +56,22 @@ class KeyFrameMapFiles {
 
  private:
   bool OnSave(dslam::SaveKeyFrameMap::Request& req, dslam::SaveKeyFrameMap::Response& res);
-  /// Saves the map to `path`; returns the response's message, throws on failure.
+  /// Saves the map to `path` (the loaded file when the node localises only in it); returns the
+  /// response's message, throws on failure.
   std::string Save(const std::string& path, int* keyframes, int* points);
+  /// " (~localisation_only has no effect)" when it is set, else "": for a refused map's error.
+  const char* NoEffect() const;
 
   const NodeConfig config_;
   std::shared_ptr<const Vocabulary> vocabulary_;
   std::shared_ptr<KeyFrameImageKeeper> keeper_;  ///< null unless keyframe_map_images
-  std::optional<KeyFrameMapFile> loaded_;        ///< ~keyframe_map, never changed after loading
+  /// ~keyframe_map, never changed after loading; null: none, or refused. Set by the
+  /// constructor, reset by the worker thread under mutex_, read by the service under mutex_.
+  std::shared_ptr<const KeyFrameMapFile> loaded_;
   Slam* slam_ = nullptr;
   bool start_due_ = false;  ///< worker thread only
   ros::ServiceServer save_srv_;
-  std::mutex mutex_;                             ///< guards camera_
+  std::mutex mutex_;                             ///< guards camera_ and loaded_'s changes
   std::shared_ptr<const PinholeCamera> camera_;  ///< of the latest frame
 };
 

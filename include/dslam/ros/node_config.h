@@ -33,6 +33,7 @@ struct NodeConfig {
   bool backend_threads = true;
   double static_map_rate_hz = 1.0;
   std::string keyframe_map = "";
+  bool localisation_only = false;
   double localise_timeout_s = 10.0;
   std::string save_keyframe_map_on_exit = "";
   bool keyframe_map_images = false;
@@ -103,13 +104,21 @@ struct NodeConfig {
     v(Field("keyframe_map", "-", 0, 0,
             "keyframe map file (save_keyframe_map, dslam_run_dataset --save-keyframe-map) to "
             "start in: no pose (status 'localising') until a frame is relocalised in it, then "
-            "every pose in its world (its first run's first frame); the map is extended. A file "
-            "that cannot be read or has another camera or vocabulary is refused with the reason "
-            "and the node maps from scratch; empty: none"),
+            "every pose in its world (its first run's first frame); the map is extended (not with "
+            "localisation_only). A file that cannot be read or has another camera or vocabulary "
+            "is refused with the reason and the node maps from scratch; empty: none"),
       s.keyframe_map);
+    v(Flag("localisation_only",
+           "track in keyframe_map without changing it: its keyframes and points are never moved, "
+           "erased or relabelled, keyframes made meanwhile are dropped once they leave the "
+           "window, and save_keyframe_map writes the loaded map unchanged; the node never leaves "
+           "the loaded map (no localise_timeout_s, no re-initialisation). Needs keyframe_map (the "
+           "node refuses to start without); false: the loaded map is extended"),
+      s.localisation_only);
     v(Field("localise_timeout_s", "s", 0.1, 3600.0,
             "without a frame localised in keyframe_map this long after the first, a new map "
-            "starts (a new trajectory segment, as when time goes backwards)"),
+            "starts (a new trajectory segment, as when time goes backwards); not with "
+            "localisation_only"),
       s.localise_timeout_s);
     v(Field("save_keyframe_map_on_exit", "-", 0, 0,
             "keyframe map file written when the node shuts down; empty: none"),

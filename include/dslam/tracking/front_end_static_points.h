@@ -84,6 +84,7 @@ struct LabelRules {
 ///   as many consecutive frames as it had been labelled dynamic, at most `rules.remark_frames`;
 ///   a marked candidate (new point) becomes verified once it is static at least
 ///   `rules.verify_frames` after its creation (frame `frame_index` now).
+/// A frozen point (Map::Freeze) keeps its marks; a dynamic or isolated label still excludes it.
 /// Returns, parallel to `matches`, whether each match must stay out of the pose.
 std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
                                     const std::vector<PointMatch>& matches, const LabelRules& rules,

@@ -57,7 +57,7 @@ std::vector<PointMatch> ClaimLocalMapMatches(const ProjectedLocalMap& projected,
                                              std::vector<bool>* feature_taken);
 
 /// ProjectLocalMap, then (when search.count_visible) times_visible incremented for every projected
-/// point, then ClaimLocalMapMatches.
+/// point that is not frozen (Map::Freeze), then ClaimLocalMapMatches.
 std::vector<PointMatch> MatchLocalMap(Map* map, const std::vector<PointId>& candidates,
                                       const FrameFeatures& features, const PinholeCamera& camera,
                                       const Eigen::Isometry3d& T_camera_world,

@@ -151,6 +151,21 @@ class Map {
   /// relocalises at a place that place recognition chose, and that restores its window after.
   void SetWindowTo(const std::vector<int>& ids, int recent = -1);
 
+  /// Freezes every keyframe and point now in the map (a loaded map used for localisation only,
+  /// Odometry::StartInMap): the map never moves, erases or culls them (MoveMadeSince,
+  /// CorrectKeyFrames, Cull, AddKeyFrame skip them), writers of points reach only unfrozen ones
+  /// (FindWritable), and keyframes added later are temporary: AddKeyFrame erases each as soon as
+  /// it is out of the window. Clear ends it.
+  void Freeze();
+  /// Freeze was called since construction or the last Clear.
+  bool frozen() const { return frozen_; }
+  /// Whether keyframe `id` was in the map when it was frozen.
+  bool IsFrozenKeyFrame(int id) const { return frozen_ && id < frozen_keyframes_end_; }
+  /// Whether point `id` was in the map when it was frozen.
+  bool IsFrozenPoint(PointId id) const { return frozen_ && id < frozen_points_end_; }
+  /// The point with `id` for changing it: nullptr when it was culled or is frozen.
+  MapPoint* FindWritable(PointId id);
+
   /// Adds a point, assigns and returns its id.
   PointId AddPoint(MapPoint point);
 
@@ -165,6 +180,8 @@ class Map {
   /// archives the keyframes that left the window, erases those of them that are redundant now
   /// (map.cpp: kRedundantShare of their points observed by kRedundantObservers other keyframes)
   /// and then the oldest archived ones beyond `limits.max_keyframes` (at least the window's size).
+  /// A frozen map (Freeze) erases every archived keyframe that is not frozen instead, and never a
+  /// frozen one: it holds its frozen keyframes and the window.
   const KeyFrame& AddKeyFrame(KeyFrame keyframe, const KeyFrameMapLimits& limits);
 
   /// The window's keyframes, oldest first (ids ascending); the newest keyframe is last.
@@ -191,7 +208,7 @@ class Map {
   /// Removes points that are neither referenced by a map keyframe nor seen since
   /// `oldest_frame_to_keep` (verified static points: since `static_seen_since_frame`, when it is
   /// earlier), and points whose found/visible ratio fell below `min_found_ratio` after
-  /// `min_visible` sightings. Returns the number removed.
+  /// `min_visible` sightings; never a frozen point. Returns the number removed.
   int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
            int static_seen_since_frame = -1);
 
@@ -208,13 +225,14 @@ class Map {
   /// archive) with frame_index >= first_frame by its share of the correction, each point with
   /// created_frame >= first_frame (position and covariance) with the newest of those keyframes
   /// made at or before its creation (all of the correction when there is none); counts a
-  /// correction.
+  /// correction. Frozen keyframes and points stay (as in CorrectKeyFrames).
   void MoveMadeSince(const MapCorrection& correction);
   /// Moves keyframes to corrected poses (a loop correction): each keyframe with an entry in
   /// `T_world_camera_corrected` (by id) to that pose; keyframes without one and newer (by id)
   /// than every keyframe with one move with the newest of those (made while the correction was
   /// computed); each point with the newest moved keyframe made at or before its creation frame
-  /// (position and covariance). Counts a correction.
+  /// (position and covariance). Frozen keyframes and points stay where they are (Freeze). Counts
+  /// a correction.
   void CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected);
   /// Corrections made by MoveMadeSince and CorrectKeyFrames since construction (Clear keeps the
   /// count): a copy of the window taken before a correction must not write its poses back after it.
@@ -223,13 +241,13 @@ class Map {
   /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
   PointId next_point_id() const { return next_point_id_; }
   size_t size() const { return points_.size(); }  ///< number of map points
-  void Clear();                                   ///< removes every point and keyframe
+  void Clear();  ///< removes every point and keyframe, and ends Freeze
 
  private:
   /// Moves each keyframe (window and archive) by [world_new <- world_old] correction_of(it) when
   /// that gives one, and each point with created_frame >= min_created_frame with the newest moved
   /// keyframe made at or before its creation frame (by *before_first when there is none; not at
-  /// all when before_first is null); counts a correction.
+  /// all when before_first is null); frozen keyframes and points stay. Counts a correction.
   void MoveKeyFramesAndPoints(
       const std::function<std::optional<Eigen::Isometry3d>(const KeyFrame&)>& correction_of,
       int min_created_frame, const Eigen::Isometry3d* before_first);
@@ -241,8 +259,11 @@ class Map {
   std::vector<int> MoveWindow(const std::vector<int>& window_ids, int recent_keyframes);
   /// Whether most points of `keyframe` are observed by enough other keyframes.
   bool IsRedundant(const KeyFrame& keyframe) const;
-  /// Erases archived keyframes with ids in `ids` that are redundant.
+  /// Erases archived keyframes with ids in `ids` that are redundant and not frozen.
   void EraseRedundant(const std::vector<int>& ids);
+  /// Erases archived keyframes with ids >= `first_id`, oldest first, while the map holds more
+  /// than `max_keyframes`.
+  void EraseArchived(int first_id, size_t max_keyframes);
 
   std::unordered_map<PointId, MapPoint> points_;
   std::deque<KeyFrame> keyframes_;
@@ -251,6 +272,9 @@ class Map {
   PointId next_point_id_ = 0;
   int next_keyframe_id_ = 0;
   uint64_t corrections_ = 0;
+  bool frozen_ = false;            ///< Freeze
+  int frozen_keyframes_end_ = 0;   ///< keyframes with smaller ids are frozen (when frozen_)
+  PointId frozen_points_end_ = 0;  ///< points with smaller ids are frozen (when frozen_)
 };
 
 }  // namespace dslam

@@ -28,6 +28,20 @@ enum class ResetMode {
   kNewWorld,
 };
 
+/// What an odometry started in a loaded keyframe map (Odometry::StartInMap) may do with it.
+enum class LoadedMapUse {
+  /// The loaded map is the start of this run's map: extended, refined, corrected and culled as
+  /// the run goes on (save it again to keep the additions).
+  kExtend,
+  /// Localisation only: the loaded keyframes and points are frozen (Map::Freeze: never moved,
+  /// erased, culled or relabelled); keyframes and points this run makes are temporary (a keyframe
+  /// is erased once it is out of the window, its points with it when culled), so memory stays
+  /// bounded by the loaded map and the window. The run never leaves the loaded map: no timeout
+  /// while localising, no re-initialisation after a long loss (frames stay lost until one is
+  /// relocalised in the window or at the places the lookup names).
+  kLocalisationOnly,
+};
+
 /// Which per-frame lists FrameResult carries (the counts are always filled). The lists cost time
 /// and memory on every frame; a caller that does not draw them asks for none.
 struct FrameRequest {
@@ -55,12 +69,17 @@ class Odometry {
   /// motion model is forgotten and frames have no pose (TrackingState::kLocalising) until one is
   /// relocalised in the map at a place `places` names (LocaliseInLoadedMap). When none is within
   /// `timeout_s` [s] of the first frame's stamp, that frame resets into a new world
-  /// (ResetMode::kNewWorld: FrameResult::reset and message say so) and a new map starts there.
-  /// Frame indices continue after the newest frame of `map`. Throws std::invalid_argument when
-  /// `places` is null, `timeout_s` is not positive or tracking.relocalisation is off.
-  void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s);
+  /// (ResetMode::kNewWorld: FrameResult::reset and message say so) and a new map starts there;
+  /// with LoadedMapUse::kLocalisationOnly there is no timeout, and `places` also serves lost
+  /// frames when SetPlaceLookup gave none. Frame indices continue after the newest frame of
+  /// `map`. Throws std::invalid_argument when `places` is null, `timeout_s` is not positive or
+  /// tracking.relocalisation is off.
+  void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
+                  LoadedMapUse use = LoadedMapUse::kExtend);
   /// Between StartInMap and the first frame localised in the map (or its timeout).
   bool localising() const { return localising_; }
+  /// StartInMap with LoadedMapUse::kLocalisationOnly, until Reset.
+  bool localisation_only() const { return localisation_only_; }
   /// Place recognition over the whole keyframe map for lost frames (null: none, the default):
   /// a frame that cannot be relocalised in the window is tried at the places `places` names
   /// (RelocaliseAtNamedPlaces), so that a tracker lost for long finds a view it left the window
@@ -105,6 +124,11 @@ class Odometry {
   bool TrackInitialPose(Current* current, FrameResult* result);
   /// While localising: RelocaliseAtNamedPlaces with `places_`; its success ends localising.
   bool LocaliseInLoadedMap(Current* current, int frame_index);
+  /// The places a lost frame is tried at: SetPlaceLookup's, else in localisation-only mode
+  /// StartInMap's; null: none.
+  PlaceLookup* LostFramePlaces() const;
+  /// Whether the map may be re-initialised from a frame (never in localisation-only mode).
+  bool MayInitialise() const { return !localisation_only_; }
   /// The window set around each keyframe `places` names for the frame (best first, at most
   /// kPlacesTriedPerFrame, KeyFramesAround) and the frame relocalised there (Relocalise); true
   /// at the first success. False: the window is as it was before.
@@ -150,7 +174,8 @@ class Odometry {
   /// Whether relocalisation is on and there is a map to relocalise in.
   bool CanRelocalise() const;
   /// A frame whose pose failed (`why`): lost while the map is initialised; after
-  /// lost_frames_before_reset lost frames (initialised_ false), the map re-initialised from it.
+  /// lost_frames_before_reset lost frames (initialised_ false), the map re-initialised from it
+  /// when MayInitialise(), else lost again.
   FrameResult Untracked(Current* current, FrameResult result, const char* why);
   /// RANSAC pose over the matches of `voters` (EstimateRobustPoseFromMatches).
   PoseResult RobustPose(const Current& current, PointSelection voters, uint32_t ransac_seed) const;
@@ -198,10 +223,12 @@ class Odometry {
   int lost_frames_ = 0;
   int last_keyframe_frame_ = 0;
   int last_keyframe_static_ = 0;
-  WeakEpisode weak_episode_;                 ///< reanchoring.h
-  std::shared_ptr<PlaceLookup> places_;      ///< StartInMap's, until localised or reset
+  WeakEpisode weak_episode_;  ///< reanchoring.h
+  /// StartInMap's, until localised (localisation-only: kept for lost frames) or reset
+  std::shared_ptr<PlaceLookup> places_;
   std::shared_ptr<PlaceLookup> map_places_;  ///< SetPlaceLookup's, for lost frames
   bool localising_ = false;                  ///< StartInMap was called and no frame localised yet
+  bool localisation_only_ = false;           ///< StartInMap's LoadedMapUse::kLocalisationOnly
   double localise_timeout_s_ = 0.0;          ///< [s] StartInMap's timeout
   bool localise_started_ = false;            ///< a frame was processed since StartInMap
   double localise_start_s_ = 0.0;            ///< [s] stamp of that first frame
