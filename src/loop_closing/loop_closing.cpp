@@ -111,4 +111,13 @@ std::vector<double> LoopClosing::times_ms() const {
   return times_ms_;
 }
 
+LoopWork LoopClosing::work() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  LoopWork work;
+  work.loops = static_cast<int>(loops_.size());
+  work.keyframes = static_cast<int>(times_ms_.size());
+  if (!times_ms_.empty()) work.last_ms = times_ms_.back();
+  return work;
+}
+
 }  // namespace dslam

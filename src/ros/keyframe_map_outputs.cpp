@@ -76,11 +76,11 @@ visualization_msgs::MarkerArray MakeLoopEdgeMarkers(const std::vector<LoopKeyFra
   return out;
 }
 
-LoopStatus SummariseLoops(size_t loops, const std::vector<double>& times_ms) {
+LoopStatus SummariseLoops(const LoopWork& work) {
   LoopStatus status;
-  status.loop_closures = static_cast<int>(loops);
-  status.loop_keyframes = static_cast<int>(times_ms.size());
-  if (!times_ms.empty()) status.loop_ms = times_ms.back();
+  status.loop_closures = work.loops;
+  status.loop_keyframes = work.keyframes;
+  status.loop_ms = work.last_ms;
   return status;
 }
 

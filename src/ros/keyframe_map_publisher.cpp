@@ -21,10 +21,11 @@ bool KeyFrameMapPublisher::RefreshLoopStatus(bool keyframe) {
     return false;
   }
   refreshed_ = now;
-  loops_ = LoopKeyFramesOf(loop_closing_->loops());
   const int before = loop_status_.loop_closures;
-  loop_status_ = SummariseLoops(loops_.size(), loop_closing_->times_ms());
-  return loop_status_.loop_closures != before;
+  loop_status_ = SummariseLoops(loop_closing_->work());
+  if (loop_status_.loop_closures == before) return false;
+  loops_ = LoopKeyFramesOf(loop_closing_->loops());  // copied only when a loop was closed
+  return true;
 }
 
 bool KeyFrameMapPublisher::Due(const ros::Publisher& publisher, bool changed,

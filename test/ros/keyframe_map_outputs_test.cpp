@@ -127,11 +127,11 @@ TEST(KeyFrameMapOutputs, LoopKeyFramesAndStatusOfClosedLoops) {
   ASSERT_EQ(ids.size(), 2u);
   EXPECT_EQ(ids[1].query_id, 90);
   EXPECT_EQ(ids[1].match_id, 11);
-  const LoopStatus status = SummariseLoops(loops.size(), {3.0, 12.5, 4.25});
+  const LoopStatus status = SummariseLoops(LoopWork{2, 3, 4.25});
   EXPECT_EQ(status.loop_closures, 2);
   EXPECT_EQ(status.loop_keyframes, 3);
   EXPECT_DOUBLE_EQ(status.loop_ms, 4.25);  // the newest keyframe's
-  const LoopStatus none = SummariseLoops(0, {});
+  const LoopStatus none = SummariseLoops(LoopWork());
   EXPECT_EQ(none.loop_closures, 0);
   EXPECT_EQ(none.loop_keyframes, 0);
   EXPECT_EQ(none.loop_ms, 0.0);

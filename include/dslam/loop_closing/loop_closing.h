@@ -42,6 +42,13 @@ struct ClosedLoop {
   double query_turned_deg = 0.0;  ///< [deg] and turned it
 };
 
+/// How much loop closing has done (LoopClosing::work).
+struct LoopWork {
+  int loops = 0;         ///< [-] loops closed
+  int keyframes = 0;     ///< [-] keyframes processed (and timed)
+  double last_ms = 0.0;  ///< [ms] the newest keyframe's time; 0 before the first
+};
+
 /// Loop closing as at the top of this file.
 class LoopClosing : public KeyFrameObserver {
  public:
@@ -63,6 +70,9 @@ class LoopClosing : public KeyFrameObserver {
   std::vector<ClosedLoop> loops() const;
   /// [ms] time spent per keyframe (detection, and correction when a loop was closed).
   std::vector<double> times_ms() const;
+  /// The number of loops() and of times_ms(), and the newest time, without copying them (any
+  /// thread): what a status message shows at every keyframe of a run of any length.
+  LoopWork work() const;
 
  private:
   /// Detection for keyframe `id` and, for a loop, its correction; true when one was closed.

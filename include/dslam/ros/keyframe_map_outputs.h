@@ -68,9 +68,8 @@ struct LoopStatus {
   double loop_ms = 0.0;
 };
 
-/// LoopStatus of `loops` accepted loops and loop closing's per-keyframe times `times_ms` [ms],
-/// oldest first (LoopClosing::loops, times_ms).
-LoopStatus SummariseLoops(size_t loops, const std::vector<double>& times_ms);
+/// LoopStatus of what loop closing has done (LoopClosing::work).
+LoopStatus SummariseLoops(const LoopWork& work);
 
 /// The current trajectory segment of `poses` (Slam::RefinedPoses: every tracked frame of the
 /// node's run in order, all segments): of the last run of non-decreasing stamps (a segment ends
