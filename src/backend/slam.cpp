@@ -136,13 +136,15 @@ BackEndStatus Slam::FinishLocalMapping(const LocalMappingJob& job) {
 }
 
 Slam::~Slam() {
-  if (!back_end_.joinable()) return;
-  {
-    const Lock lock(map_mutex_);
-    stop_ = true;  // a job in progress finishes, then the thread ends
+  if (back_end_.joinable()) {
+    {
+      const Lock lock(map_mutex_);
+      stop_ = true;  // a job in progress finishes, then the thread ends
+    }
+    work_.notify_all();
+    back_end_.join();
   }
-  work_.notify_all();
-  back_end_.join();
+  for (const auto& observer : observers_) observer->OnStop();
 }
 
 void Slam::BackEndLoop() {

@@ -10,8 +10,12 @@
 
 namespace dslam {
 
-LoopClosing::LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary)
-    : config_(config.loop_closing), pose_config_(config.pose), vocabulary_(std::move(vocabulary)) {}
+LoopClosing::LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary,
+                         WorkerMode mode)
+    : config_(config.loop_closing),
+      pose_config_(config.pose),
+      vocabulary_(std::move(vocabulary)),
+      worker_(std::make_unique<OrderedWorker>(mode, kMaxQueuedKeyFrames)) {}
 
 void LoopClosing::Attach(Slam* slam) {
   slam_ = slam;
@@ -21,20 +25,35 @@ void LoopClosing::Attach(Slam* slam) {
 void LoopClosing::OnKeyFrames(const std::vector<KeyFrameRecord>& added,
                               const std::vector<KeyFramePose>& /*window*/) {
   for (const KeyFrameRecord& record : added) {
-    const Stopwatch stopwatch;
-    if (!detector_ && record.frame.camera) {
-      detector_ =
-          std::make_unique<LoopDetector>(vocabulary_, config_, *record.frame.camera, pose_config_);
-    }
-    if (record.loaded) {
-      AddLoadedKeyFrame(record.id);
-      continue;
-    }
-    if (record.temporary) continue;  // localisation only: the loaded map stays as it is
-    ProcessKeyFrame(record.id);
-    const std::lock_guard<std::mutex> lock(mutex_);
-    times_ms_.push_back(stopwatch.ElapsedMs());
+    worker_->Post(
+        [this, id = record.id, loaded = record.loaded, temporary = record.temporary,
+         camera = record.frame.camera] { HandleKeyFrame(id, loaded, temporary, camera); });
   }
+}
+
+void LoopClosing::HandleKeyFrame(int id, bool loaded, bool temporary,
+                                 const std::shared_ptr<const PinholeCamera>& camera) {
+  if (stopping_) return;
+  const Stopwatch stopwatch;
+  if (!detector_ && camera) {
+    detector_ = std::make_unique<LoopDetector>(vocabulary_, config_, *camera, pose_config_);
+  }
+  if (loaded) {
+    AddLoadedKeyFrame(id);
+    return;
+  }
+  if (temporary) return;  // localisation only: the loaded map stays as it is
+  ProcessKeyFrame(id);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  times_ms_.push_back(stopwatch.ElapsedMs());
+}
+
+void LoopClosing::Wait() { worker_->Wait(); }
+
+void LoopClosing::OnStop() {
+  stopping_ = true;
+  worker_->Wait();
+  slam_ = nullptr;
 }
 
 bool LoopClosing::ProcessKeyFrame(int id) {
@@ -95,10 +114,12 @@ void LoopClosing::PruneErased(const Map& map) {
 }
 
 void LoopClosing::OnReset(ResetMode /*mode*/) {
-  in_database_.clear();
-  loop_edges_.clear();
-  if (detector_) detector_->Clear();
-  keyframes_since_loop_ = kKeyFramesAfterLoop;
+  worker_->Post([this] {  // after the keyframes of the run it ends
+    in_database_.clear();
+    loop_edges_.clear();
+    if (detector_) detector_->Clear();
+    keyframes_since_loop_ = kKeyFramesAfterLoop;
+  });
 }
 
 std::vector<ClosedLoop> LoopClosing::loops() const {

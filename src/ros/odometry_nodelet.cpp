@@ -70,7 +70,9 @@ void OdometryNodelet::onInit() {
     const auto vocabulary =
         std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath()));
     if (config.backend.enabled && config.loop_closing.enabled) {  // it needs the keyframe map
-      loop_closing_ = std::make_shared<LoopClosing>(config, vocabulary);
+      loop_closing_ = std::make_shared<LoopClosing>(
+          config, vocabulary,
+          config_.backend_threads ? WorkerMode::kThreaded : WorkerMode::kSynchronous);
       observers.push_back(loop_closing_);
     }
     keyframe_maps_ = std::make_unique<KeyFrameMapFiles>(nh, config_, vocabulary);

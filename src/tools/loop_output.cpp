@@ -9,9 +9,14 @@
 namespace dslam {
 namespace tools {
 
-LoopOutput::LoopOutput(const Config& config, std::shared_ptr<const Vocabulary> vocabulary) {
+LoopOutput::LoopOutput(const Config& config, std::shared_ptr<const Vocabulary> vocabulary,
+                       WorkerMode mode) {
   if (!config.loop_closing.enabled || !config.backend.enabled) return;
-  closer_ = std::make_shared<LoopClosing>(config, std::move(vocabulary));
+  closer_ = std::make_shared<LoopClosing>(config, std::move(vocabulary), mode);
+}
+
+void LoopOutput::Wait() {
+  if (closer_) closer_->Wait();
 }
 
 std::vector<std::shared_ptr<KeyFrameObserver>> LoopOutput::Observers() const {

@@ -20,18 +20,19 @@ namespace tools {
 /// back end's keyframe map).
 class LoopOutput {
  public:
-  /// Loop closing with `vocabulary` when it is on. Throws std::invalid_argument when it is on and
-  /// `vocabulary` is null.
-  LoopOutput(const Config& config, std::shared_ptr<const Vocabulary> vocabulary);
+  /// Loop closing with `vocabulary` when it is on, its keyframes processed as `mode` says
+  /// (LoopClosing). Throws std::invalid_argument when it is on and `vocabulary` is null.
+  LoopOutput(const Config& config, std::shared_ptr<const Vocabulary> vocabulary, WorkerMode mode);
 
   /// The loop closer, for Slam's constructor (empty when off).
   std::vector<std::shared_ptr<KeyFrameObserver>> Observers() const;
   /// Gives the loop closer the Slam it corrects; call before the first frame.
   void Attach(Slam* slam);
   bool enabled() const { return closer_ != nullptr; }  ///< loop closing runs
+  /// Returns when loop closing processed every keyframe; call after Slam::WaitForBackEnd.
+  void Wait();
 
-  /// Writes the accepted loops to `path` (loop_io.h) when not empty; call after
-  /// Slam::WaitForBackEnd.
+  /// Writes the accepted loops to `path` (loop_io.h) when not empty; call after Wait.
   void Write(const std::string& path) const;
   /// One line: loops closed, time per keyframe.
   void Print() const;

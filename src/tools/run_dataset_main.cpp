@@ -219,7 +219,9 @@ int Run(const Args& args) {
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
   dslam::tools::MapOutput maps(args.map, args.map_unmasked, config);
   const std::shared_ptr<const dslam::Vocabulary> vocabulary = RunVocabulary(args, config);
-  dslam::tools::LoopOutput loops(config, vocabulary);
+  dslam::tools::LoopOutput loops(
+      config, vocabulary,
+      args.threads ? dslam::WorkerMode::kThreaded : dslam::WorkerMode::kSynchronous);
   std::vector<std::shared_ptr<dslam::KeyFrameObserver>> observers = maps.Observers();
   for (auto& observer : loops.Observers()) observers.push_back(observer);
   dslam::tools::KeyFrameMapOutput keyframe_map(args.save_keyframe_map, vocabulary);
@@ -236,6 +238,7 @@ int Run(const Args& args) {
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
+  loops.Wait();  // its last correction reaches the refined trajectory and the saved map
   if (out.objects) out.objects->Close();
   maps.Write();
   loops.Write(args.loops);

@@ -3,6 +3,8 @@
 // (Slam::CorrectKeyFrames) arrive from that thread between frames and during local-mapping runs.
 // Run under ThreadSanitizer by scripts/sanitize.sh (CI).
 #include <atomic>
+#include <chrono>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -43,7 +45,8 @@ TEST(LoopClosingThreads, DetectionAndCorrectionsRunBesideTracking) {
   Config config;
   config.backend.enabled = true;
   auto closer = std::make_shared<LoopClosing>(
-      config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())));
+      config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())),
+      WorkerMode::kThreaded);
   auto corrector = std::make_shared<Corrector>();
   Slam slam(config, BackEndMode::kThreaded, RefinedPoseRecording::kOn, {closer, corrector});
   closer->Attach(&slam);
@@ -51,11 +54,35 @@ TEST(LoopClosingThreads, DetectionAndCorrectionsRunBesideTracking) {
   int with_pose = 0;
   for (const RgbdFrame& frame : room.frames) with_pose += slam.ProcessFrame(frame).has_pose;
   slam.WaitForBackEnd();
+  closer->Wait();
   EXPECT_EQ(with_pose, 60);
   EXPECT_GE(corrector->corrections(), 1);  // deliveries group the keyframes made meanwhile
   EXPECT_GE(closer->times_ms().size(), 3u);
   EXPECT_TRUE(closer->loops().empty());  // one view of a room: nothing seen twice
   EXPECT_EQ(slam.RefinedPoses().size(), 60u);
+}
+
+TEST(LoopClosingThreads, SlamStopsLoopClosingBeforeItIsDestroyed) {
+  // Slam destroyed while keyframes may still wait for loop closing's thread: ~Slam's OnStop
+  // skips them and waits for the one in progress, so nothing calls the destroyed Slam (the
+  // sanitizers' builds check that), and loop closing stays usable and idle after it.
+  const test::RenderedSequence& room = test::SharedSequence("static_room", 60);
+  Config config;
+  config.backend.enabled = true;
+  auto closer = std::make_shared<LoopClosing>(
+      config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())),
+      WorkerMode::kThreaded);
+  {
+    Slam slam(config, BackEndMode::kThreaded, RefinedPoseRecording::kOn, {closer});
+    closer->Attach(&slam);
+    for (const RgbdFrame& frame : room.frames) slam.ProcessFrame(frame);
+  }
+  const LoopWork after_stop = closer->work();
+  closer->Wait();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const LoopWork later = closer->work();
+  EXPECT_EQ(later.keyframes, after_stop.keyframes);
+  EXPECT_EQ(later.loops, 0);
 }
 
 }  // namespace

@@ -64,6 +64,10 @@ class KeyFrameObserver {
   /// the keyframes of the same delivery (those made before the correction are in the list at
   /// their corrected poses); a reset after it drops it. The default ignores it.
   virtual void OnCorrection(const std::vector<KeyFramePose>& keyframes) {}
+  /// Slam is being destroyed: called once by ~Slam after its back-end thread ended, on the
+  /// destroying thread. An observer that calls Slam from a thread of its own stops doing so
+  /// before it returns. The default does nothing.
+  virtual void OnStop() {}
 };
 
 }  // namespace dslam

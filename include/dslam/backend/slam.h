@@ -81,7 +81,8 @@ class Slam {
   explicit Slam(const Config& config, BackEndMode mode = BackEndMode::kSynchronous,
                 RefinedPoseRecording refined = RefinedPoseRecording::kOn,
                 std::vector<std::shared_ptr<KeyFrameObserver>> observers = {});
-  /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued.
+  /// Stops the back-end thread: waits for a run in progress, drops keyframes still queued; then
+  /// tells every observer (KeyFrameObserver::OnStop).
   ~Slam();
   Slam(const Slam&) = delete;
   Slam& operator=(const Slam&) = delete;

@@ -7,12 +7,18 @@
 // keyframes (KeyFrameRecord::temporary: a run that localises only in a loaded map) are left
 // out: neither entered in the database nor searched, so no loop moves the loaded map.
 //
-// Threads: Slam calls OnKeyFrames without holding its map lock (keyframe_observer.h): on its
-// back-end thread in threaded mode, on the caller's in synchronous mode. Detection and the graph's
-// construction run under the map lock (Slam::ReadMap; tracking waits that long), the solve
-// without it, the correction under it again. This class's own mutex guards only the list of
-// loops and the times, and is never held while calling Slam.
+// Threads: Slam calls OnKeyFrames and OnReset without holding its map lock (keyframe_observer.h):
+// on its back-end thread in threaded mode, on the caller's in synchronous mode. They post the
+// work, in order, to loop closing's OrderedWorker: WorkerMode::kThreaded runs it on loop
+// closing's own thread (so a loop's pose graph never delays local mapping), kSynchronous inside
+// the call (deterministic). The detector, the database bookkeeping and the loop edges are the
+// worker's alone. Detection and the graph's construction run under the map lock (Slam::ReadMap;
+// tracking waits that long), the solve without it, the correction under it again
+// (Slam::CorrectKeyFrames). This class's own mutex guards only the list of loops and the times,
+// and is never held while calling Slam. OnStop (from ~Slam) skips the keyframes still queued and
+// waits for the one in progress; nothing calls Slam after it.
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -22,6 +28,7 @@
 #include "dslam/backend/keyframe_observer.h"
 #include "dslam/backend/slam.h"
 #include "dslam/core/config.h"
+#include "dslam/core/ordered_worker.h"
 #include "dslam/loop_closing/loop_correction.h"
 #include "dslam/loop_closing/loop_detector.h"
 #include "dslam/place_recognition/vocabulary.h"
@@ -31,6 +38,9 @@ namespace dslam {
 /// After an accepted loop, this many keyframes are not searched for loops (ORB-SLAM2 waits 10):
 /// the tracker needs them to take up the corrected map.
 constexpr int kKeyFramesAfterLoop = 10;
+
+/// Keyframes waiting for loop closing's thread at most (WorkerMode::kThreaded).
+constexpr int kMaxQueuedKeyFrames = 16;
 
 /// Keyframes between two removals of erased keyframes from the place database.
 constexpr int kPruneKeyFrames = 50;
@@ -54,7 +64,10 @@ class LoopClosing : public KeyFrameObserver {
  public:
   /// `vocabulary` (shared, read-only) gives the keyframes' words; thresholds from
   /// config.loop_closing.
-  LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary);
+  /// `mode`: where keyframes are processed (top of this file); threaded, at most
+  /// kMaxQueuedKeyFrames wait and OnKeyFrames blocks beyond that.
+  LoopClosing(const Config& config, std::shared_ptr<const Vocabulary> vocabulary,
+              WorkerMode mode = WorkerMode::kSynchronous);
 
   /// The Slam whose map is searched and corrected; call before its first frame. `slam` must
   /// outlive this object's use by it. The same vocabulary serves `slam`'s lost frames: a frame
@@ -65,6 +78,12 @@ class LoopClosing : public KeyFrameObserver {
   void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
                    const std::vector<KeyFramePose>& window) override;
   void OnReset(ResetMode mode) override;
+  void OnStop() override;
+
+  /// Returns when every keyframe given so far was processed (threaded: by loop closing's thread);
+  /// rethrows an error of that work. Call from the thread that delivers keyframes, or after it
+  /// stopped (e.g. after Slam::WaitForBackEnd).
+  void Wait();
 
   /// The loops closed so far, oldest first (a copy; any thread).
   std::vector<ClosedLoop> loops() const;
@@ -75,6 +94,10 @@ class LoopClosing : public KeyFrameObserver {
   LoopWork work() const;
 
  private:
+  /// One keyframe of OnKeyFrames, on the worker: into the database (loaded), skipped
+  /// (temporary) or searched and timed.
+  void HandleKeyFrame(int id, bool loaded, bool temporary,
+                      const std::shared_ptr<const PinholeCamera>& camera);
   /// Detection for keyframe `id` and, for a loop, its correction; true when one was closed.
   bool ProcessKeyFrame(int id);
   /// A keyframe of a loaded map (KeyFrameRecord::loaded) into the database, without a search.
@@ -96,6 +119,10 @@ class LoopClosing : public KeyFrameObserver {
   mutable std::mutex mutex_;          ///< guards loops_ and times_ms_
   std::vector<ClosedLoop> loops_;
   std::vector<double> times_ms_;
+  std::atomic<bool> stopping_{false};  ///< OnStop began: queued keyframes are skipped
+  /// Runs the keyframes' work in order; declared last, so that its thread ends (destroyed first)
+  /// before the members its tasks use.
+  std::unique_ptr<OrderedWorker> worker_;
 };
 
 }  // namespace dslam
