@@ -1,6 +1,7 @@
 #include "dslam/loop_closing/loop_closing.h"
 
 #include <cmath>
+#include <exception>
 #include <optional>
 #include <utility>
 
@@ -52,7 +53,12 @@ void LoopClosing::Wait() { worker_->Wait(); }
 
 void LoopClosing::OnStop() {
   stopping_ = true;
-  worker_->Wait();
+  try {
+    worker_->Wait();
+  } catch (const std::exception&) {
+    // Called from ~Slam, which must not throw: an error of the last keyframe's work is dropped
+    // with the keyframes skipped after it.
+  }
   slam_ = nullptr;
 }
 

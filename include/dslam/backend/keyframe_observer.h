@@ -66,7 +66,7 @@ class KeyFrameObserver {
   virtual void OnCorrection(const std::vector<KeyFramePose>& keyframes) {}
   /// Slam is being destroyed: called once by ~Slam after its back-end thread ended, on the
   /// destroying thread. An observer that calls Slam from a thread of its own stops doing so
-  /// before it returns. The default does nothing.
+  /// before it returns. It must not throw (a destructor calls it). The default does nothing.
   virtual void OnStop() {}
 };
 
