@@ -40,13 +40,24 @@ class Corrector : public KeyFrameObserver {
   std::atomic<int> corrections_{0};
 };
 
-TEST(LoopClosingThreads, DetectionAndCorrectionsRunBesideTracking) {
-  const test::RenderedSequence& room = test::SharedSequence("static_room", 60);
+/// The default configuration with the back end on.
+Config BackEndConfig() {
   Config config;
   config.backend.enabled = true;
-  auto closer = std::make_shared<LoopClosing>(
+  return config;
+}
+
+/// Loop closing on its own thread, with the committed vocabulary.
+std::shared_ptr<LoopClosing> ThreadedLoopClosing(const Config& config) {
+  return std::make_shared<LoopClosing>(
       config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())),
       WorkerMode::kThreaded);
+}
+
+TEST(LoopClosingThreads, DetectionAndCorrectionsRunBesideTracking) {
+  const test::RenderedSequence& room = test::SharedSequence("static_room", 60);
+  const Config config = BackEndConfig();
+  const std::shared_ptr<LoopClosing> closer = ThreadedLoopClosing(config);
   auto corrector = std::make_shared<Corrector>();
   Slam slam(config, BackEndMode::kThreaded, RefinedPoseRecording::kOn, {closer, corrector});
   closer->Attach(&slam);
@@ -67,11 +78,8 @@ TEST(LoopClosingThreads, SlamStopsLoopClosingBeforeItIsDestroyed) {
   // skips them and waits for the one in progress, so nothing calls the destroyed Slam (the
   // sanitizers' builds check that), and loop closing stays usable and idle after it.
   const test::RenderedSequence& room = test::SharedSequence("static_room", 60);
-  Config config;
-  config.backend.enabled = true;
-  auto closer = std::make_shared<LoopClosing>(
-      config, std::make_shared<const Vocabulary>(Vocabulary::Load(DefaultVocabularyPath())),
-      WorkerMode::kThreaded);
+  const Config config = BackEndConfig();
+  const std::shared_ptr<LoopClosing> closer = ThreadedLoopClosing(config);
   {
     Slam slam(config, BackEndMode::kThreaded, RefinedPoseRecording::kOn, {closer});
     closer->Attach(&slam);
