@@ -28,11 +28,4 @@ std::vector<std::pair<int, int>> CovisibilityIndex::Covisible(const KeyFrame& ke
   return out;
 }
 
-std::vector<int> CovisibilityIndex::CovisibleIds(const KeyFrame& keyframe) const {
-  std::vector<int> ids;
-  for (const auto& [id, shared] : Covisible(keyframe)) ids.push_back(id);
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
-
 }  // namespace dslam

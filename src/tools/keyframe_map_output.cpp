@@ -30,9 +30,12 @@ void KeyFrameMapOutput::Load(const std::string& path, std::shared_ptr<const Pinh
     KeyFrameMapFile file = LoadKeyFrameMap(path);
     loaded_keyframes_ = file.contents.keyframes.size();
     loaded_points_ = file.contents.points.size();
-    if (only) localisation_map_ = std::make_shared<const KeyFrameMapFile>(file);  // to save
+    if (only && !save_path_.empty()) {  // saved as loaded: a copy, images included
+      localisation_map_ = std::make_shared<const KeyFrameMapFile>(file);
+    }
     load_problem_ = StartInKeyFrameMap(std::move(file), camera, vocabulary_, timeout_s, slam, use);
-    if (!load_problem_.empty()) localisation_map_.reset();
+    localisation_only_ = only && load_problem_.empty();
+    if (!localisation_only_) localisation_map_.reset();
   } catch (const KeyFrameMapError& e) {
     load_problem_ = e.what();
   }
@@ -64,14 +67,14 @@ void KeyFrameMapOutput::Print() const {
   if (save_path_.empty()) return;
   std::printf(
       "keyframe map%s: %zu keyframes, %zu points, images of %zu keyframes, %zu bytes -> %s\n",
-      localisation_map_ ? " (localisation only: the loaded map unchanged)" : "", keyframes_,
+      localisation_only_ ? " (localisation only: the loaded map unchanged)" : "", keyframes_,
       points_, images_, bytes_, save_path_.c_str());
 }
 
 void KeyFrameMapOutput::AddTo(JsonObject* json) const {
   if (load_path_.empty()) return;
   json->AddBool("keyframe_map_loaded", load_problem_.empty());
-  json->AddBool("localisation_only", localisation_map_ != nullptr);
+  json->AddBool("localisation_only", localisation_only_);
 }
 
 }  // namespace tools

@@ -53,8 +53,10 @@ class KeyFrameMapOutput {
   std::string save_path_, load_path_;
   std::shared_ptr<const Vocabulary> vocabulary_;
   std::shared_ptr<KeyFrameImageKeeper> keeper_;
-  std::string load_problem_;  ///< why the loaded file was refused; "" when it was not
-  /// The loaded file when the run localises only in it (saved as it is); null otherwise.
+  std::string load_problem_;        ///< why the loaded file was refused; "" when it was not
+  bool localisation_only_ = false;  ///< the run localises only in the loaded map
+  /// The loaded file when the run localises only in it and a map is to be saved (saved as it
+  /// is); null otherwise.
   std::shared_ptr<const KeyFrameMapFile> localisation_map_;
   size_t loaded_keyframes_ = 0, loaded_points_ = 0;
   size_t keyframes_ = 0, points_ = 0, images_ = 0, bytes_ = 0;

@@ -178,12 +178,12 @@ std::vector<bool> ApplyStaticLabels(const FrontEndStaticPoints& front_end,
   if (!front_end.ran || front_end.result.static_component < 0) return excluded;
   for (size_t g = 0; g < front_end.graph_match.size(); ++g) {
     const int m = front_end.graph_match[g];
-    if (map->Find(matches[m].id) == nullptr) continue;
+    MapPoint* point = map->Find(matches[m].id);
+    if (point == nullptr) continue;
     const PointLabel label = front_end.result.labels[g];
     excluded[m] = label == PointLabel::kDynamic || label == PointLabel::kIsolated;
     // A frozen point (Map::Freeze) keeps its marks: its label only excludes it from this frame.
-    MapPoint* point = map->FindWritable(matches[m].id);
-    if (point != nullptr) ApplyLabel(label, rules, frame_index, point);
+    if (!map->IsFrozenPoint(matches[m].id)) ApplyLabel(label, rules, frame_index, point);
   }
   return excluded;
 }

@@ -183,12 +183,12 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
   previous_.T_camera_world = current.T_camera_world;
   last_tracked_.clear();
   for (const PointMatch& match : current.matches) {
-    if (map_.Find(match.id) == nullptr) continue;
+    MapPoint* point = map_.Find(match.id);
+    if (point == nullptr) continue;
     last_tracked_.push_back(match.id);
     const auto& measurement = current.features.features[match.feature].measurement;
     if (measurement) previous_.by_point.emplace(match.id, *measurement);
-    MapPoint* point = map_.FindWritable(match.id);  // a frozen point stays as it was
-    if (point == nullptr) continue;
+    if (map_.IsFrozenPoint(match.id)) continue;  // a frozen point stays as it was
     ++point->times_found;
     point->last_seen_frame = frame_index_ - 1;
     if (measurement && !point->marked) {

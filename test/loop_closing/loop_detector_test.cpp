@@ -62,8 +62,12 @@ class LoopDetectorTest : public testing::Test {
   }
 
   void ExpectNoCovisibleCandidate(const LoopDetector& detector, int id) const {
-    const std::vector<int> covisible =
-        CovisibilityIndex(scene_.map).CovisibleIds(*scene_.map.FindKeyFrame(id));
+    std::vector<int> covisible;
+    for (const auto& [other, shared] :
+         CovisibilityIndex(scene_.map).Covisible(*scene_.map.FindKeyFrame(id))) {
+      covisible.push_back(other);
+    }
+    std::sort(covisible.begin(), covisible.end());
     for (const PlaceCandidate& candidate : detector.last_candidates()) {
       EXPECT_FALSE(std::binary_search(covisible.begin(), covisible.end(), candidate.id))
           << "keyframe " << id << " candidate " << candidate.id;

@@ -25,9 +25,6 @@ class CovisibilityIndex {
   /// sharing at least one point with it, most shared points first (ties: lower id first).
   std::vector<std::pair<int, int>> Covisible(const KeyFrame& keyframe) const;
 
-  /// Ids of the keyframes sharing at least one point with `keyframe` (itself excluded), ascending.
-  std::vector<int> CovisibleIds(const KeyFrame& keyframe) const;
-
   std::size_t num_points() const { return observers_.size(); }  ///< points with observers
 
  private:
