@@ -114,21 +114,18 @@ BowVector LoopDetector::Words(const Map& map, const KeyFrame& keyframe) const {
 double LoopDetector::MinScore(const KeyFrame& query, const BowVector& words,
                               const std::vector<int>& covisible,
                               const std::vector<PlaceCandidate>& scored) const {
-  double best = -1.0;
-  for (int id : covisible) {
-    if (entries_.count(id) != 0) {
-      best = 0.0;
-      break;
-    }
-  }
-  for (const PlaceCandidate& c : scored) {
-    if (std::binary_search(covisible.begin(), covisible.end(), c.id))
-      best = std::max(best, c.score);
-  }
-  if (best < 0.0) {  // no covisible keyframe in the database: the previously processed one
+  const bool covisible_in_database = std::any_of(covisible.begin(), covisible.end(),
+                                                 [&](int id) { return entries_.count(id) != 0; });
+  if (!covisible_in_database) {  // the previously processed keyframe instead
     const auto previous = entries_.lower_bound(query.id);
     if (previous == entries_.begin()) return 0.0;
-    best = ScoreL1(words, std::prev(previous)->second.words);
+    return config_.min_score_ratio * ScoreL1(words, std::prev(previous)->second.words);
+  }
+  double best = 0.0;  // a covisible keyframe sharing no word with the query scores 0
+  for (const PlaceCandidate& c : scored) {
+    if (std::binary_search(covisible.begin(), covisible.end(), c.id)) {
+      best = std::max(best, c.score);
+    }
   }
   return config_.min_score_ratio * best;
 }
