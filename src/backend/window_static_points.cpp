@@ -75,6 +75,31 @@ bool LosesMark(PointLabel label, bool unmark_isolated) {
   return label == PointLabel::kDynamic || (unmark_isolated && label == PointLabel::kIsolated);
 }
 
+// Per component of `result`: whether its points labelled moving lose their marks. Algorithm 1
+// unmarks every component but the static one; two departures (BENCHMARKS.md, "Issue 32, part 6"):
+// - A component of fewer than backend.spd_min_dynamic_points points keeps its marks: over a
+//   window of up to 12 keyframes one bad measurement (blur, a depth edge) cuts a few points off,
+//   while a moving body is cut off with many (on TUM rpy, where nothing moves, mostly 2-4).
+// - When a component that would lose its marks holds more points than the static one, nothing
+//   is unmarked: the window holds two "static worlds" (a person who filled the view and was
+//   tracked as background, then the background again) and its volume rule would overrule
+//   the front end's frame-by-frame decisions wholesale.
+std::vector<bool> ComponentsLosingMarks(const StaticPointsResult& result,
+                                        const BackendConfig& config) {
+  std::vector<int> size(ComponentCount(result.component), 0);
+  for (int c : result.component) ++size[c];
+  std::vector<bool> loses(size.size(), false);
+  if (result.static_component < 0) return loses;
+  const int static_size = size[result.static_component];
+  for (size_t i = 0; i < result.labels.size(); ++i) {
+    const int c = result.component[i];
+    if (!LosesMark(result.labels[i], config.spd_unmark_isolated)) continue;
+    if (size[c] > static_size) return std::vector<bool>(size.size(), false);
+    loses[c] = size[c] >= config.spd_min_dynamic_points;
+  }
+  return loses;
+}
+
 }  // namespace
 
 WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map* map) {
@@ -89,8 +114,10 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
       CollectProblem(*map, keyframes, rotation_sigma * rotation_sigma, &ids);
   if (static_cast<int>(ids.size()) < kMinGraphPoints) return stats;
   const StaticPointsResult result = DetermineStaticPoints(input, config.static_points);
+  const std::vector<bool> loses = ComponentsLosingMarks(result, config.backend);
   if (result.static_component >= 0) {
     for (size_t i = 0; i < ids.size(); ++i) {
+      if (!loses[result.component[i]]) continue;
       if (!LosesMark(result.labels[i], config.backend.spd_unmark_isolated)) continue;
       MapPoint* point = map->FindWritable(ids[i]);
       if (point == nullptr) continue;  // frozen (a loaded map used for localisation only)

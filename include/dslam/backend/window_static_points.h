@@ -12,7 +12,10 @@
 // world-frame measurements agree within the chi-square quantile with 3(K-1) dof, so the test
 // gets stronger with every keyframe that measures the edge; an edge measured in fewer than
 // static_points.min_edge_measurements keyframes connects nothing; a component is only unmarked
-// when a tested edge ties it to the static component. Keyframe poses are held fixed, so each
+// when a tested edge ties it to the static component. Two rules of the window's own: a component
+// of fewer than backend.spd_min_dynamic_points points keeps its marks, and when a component that
+// would lose its marks holds more points than the static one nothing is unmarked (the reasons
+// are at ComponentsLosingMarks, window_static_points.cpp). Keyframe poses are held fixed, so each
 // measurement only needs its keyframe's rotation (the translation cancels).
 
 #include "dslam/core/config.h"

@@ -13,6 +13,7 @@ namespace dslam {
 struct BackendConfig {
   bool enabled = false;
   bool spd_unmark_isolated = false;
+  int spd_min_dynamic_points = 10;
   double spd_rotation_sigma_deg = 0.3;
   int ba_fixed_keyframes = 3;
   double ba_max_correction_chi2 = 16.81;
@@ -40,6 +41,12 @@ struct BackendConfig {
     // and Bonn).
     v(Flag("spd_unmark_isolated", "points whose tested edges are all inconsistent lose their mark"),
       s.spd_unmark_isolated);
+    // Components this small are cut off by a bad measurement more often than by motion over a
+    // window (window_static_points.cpp, ComponentsLosingMarks); the same count as
+    // static_points.min_static_points, the smallest component that may be the static world.
+    v(Field("spd_min_dynamic_points", "-", 1, 1000000,
+            "window components with fewer points keep their marks"),
+      s.spd_min_dynamic_points);
     // Each keyframe's rotation error turns an edge l into an error of about l x dtheta in its
     // measurement; the front end's pose information does not see drift, so this sigma is added
     // to every window measurement's covariance (CorrelationInput::rotation_covariance). 0.3 deg
