@@ -140,7 +140,7 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
 }
 
 int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
-              int static_seen_since_frame, int ratio_checked_after_frame) {
+              int static_seen_since_frame) {
   int removed = 0;
   for (auto it = points_.begin(); it != points_.end();) {
     const MapPoint& p = it->second;
@@ -152,9 +152,8 @@ int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
                                ? std::min(oldest_frame_to_keep, static_seen_since_frame)
                                : oldest_frame_to_keep;
     const bool stale = p.last_seen_frame < keep_since && p.observing_keyframes <= 0;
-    const bool unreliable = p.created_frame > ratio_checked_after_frame &&
-                            p.times_visible >= min_visible &&
-                            p.times_found < min_found_ratio * p.times_visible;
+    const bool unreliable =
+        p.times_visible >= min_visible && p.times_found < min_found_ratio * p.times_visible;
     if (stale || unreliable) {
       it = points_.erase(it);
       ++removed;

@@ -19,15 +19,6 @@ constexpr double kSearchMinDepthM = 0.1;
 // found/visible ratio (tracking.cull_min_found_ratio).
 constexpr int kCullMinVisible = 8;
 
-// Frame of the keyframe made `young_keyframes` keyframes before the newest one
-// (tracking.cull_young_keyframes): only points created after it are culled by their found/visible
-// ratio. -1 (every point) when the rule is off (0) or the window holds no such keyframe.
-int RatioCheckedAfterFrame(const Map& map, int young_keyframes) {
-  const std::deque<KeyFrame>& keyframes = map.keyframes();
-  if (young_keyframes <= 0 || static_cast<int>(keyframes.size()) <= young_keyframes) return -1;
-  return keyframes[keyframes.size() - 1 - young_keyframes].frame_index;
-}
-
 }  // namespace
 
 void Odometry::MatchLocalMapPoints(Current* current, const Eigen::Isometry3d& T_camera_world,
@@ -273,8 +264,7 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.weak_since_previous = weak_since_keyframe_;
   map_.AddKeyFrame(std::move(keyframe), MapLimits());
   map_.Cull(map_.keyframes()[map_.first_recent_keyframe()].frame_index, cfg.cull_min_found_ratio,
-            kCullMinVisible, StaticSeenSinceFrame(),
-            RatioCheckedAfterFrame(map_, cfg.cull_young_keyframes));
+            kCullMinVisible, StaticSeenSinceFrame());
   last_keyframe_frame_ = frame_index;
   last_keyframe_static_ = current.pose.num_inliers;
   last_tracked_.insert(last_tracked_.end(), created.begin(), created.end());

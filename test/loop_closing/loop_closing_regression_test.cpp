@@ -64,11 +64,9 @@ TEST(LoopClosingRegression, RoomTourClosesTrueLoopsAndTheLapComesTogether) {
   }
   const LoopCheck check = CheckLoops(records, tour.groundtruth, LoopCheckOptions());
   EXPECT_EQ(check.checked, static_cast<int>(records.size()));
-  EXPECT_EQ(check.false_loops, 0);  // measured errors <= 8 mm, 0.21 deg
-  // Measured 0.111 m and 0.035 m (0.21 m and 0.07 m before map culling checked only young
-  // points by their found ratio, tracking.cull_young_keyframes).
-  EXPECT_GT(off.refined_ate_m, 0.08);
-  EXPECT_LT(on.refined_ate_m, 0.07);
+  EXPECT_EQ(check.false_loops, 0);     // measured errors <= 8 mm, 0.21 deg
+  EXPECT_GT(off.refined_ate_m, 0.15);  // measured 0.21 m
+  EXPECT_LT(on.refined_ate_m, 0.14);   // measured 0.07 m
   EXPECT_LT(on.refined_ate_m, 0.5 * off.refined_ate_m);
   EXPECT_EQ(on.initialisations, 1);
 }

@@ -61,25 +61,6 @@ TEST(Map, CullRemovesStaleAndUnreliablePoints) {
   EXPECT_NE(map.Find(w), nullptr);
 }
 
-// Background hidden by a person: predicted visible in 10 frames, found in 1. Only a point
-// created after the given frame is culled for it.
-TEST(Map, OnlyYoungPointsAreCulledByTheirFoundRatio) {
-  Map map;
-  MapPoint old_hidden;
-  old_hidden.created_frame = 4;
-  old_hidden.last_seen_frame = 20;
-  old_hidden.times_visible = 10;
-  old_hidden.times_found = 1;
-  MapPoint young_hidden = old_hidden;
-  young_hidden.created_frame = 15;
-  const PointId o = map.AddPoint(old_hidden), y = map.AddPoint(young_hidden);
-  EXPECT_EQ(map.Cull(10, 0.25, 5, -1, /*ratio_checked_after_frame=*/12), 1);
-  EXPECT_NE(map.Find(o), nullptr);
-  EXPECT_EQ(map.Find(y), nullptr);
-  EXPECT_EQ(map.Cull(10, 0.25, 5, -1, /*ratio_checked_after_frame=*/-1), 1);  // every point
-  EXPECT_EQ(map.Find(o), nullptr);
-}
-
 TEST(Map, VerifiedStaticPointsOutsideTheWindowAreKeptAndSearched) {
   Map map;
   MapPoint hidden_static;  // verified static, last seen in frame 8, in no window keyframe

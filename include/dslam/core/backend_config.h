@@ -23,10 +23,11 @@ struct BackendConfig {
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
     // Off by default until it beats the front end alone on every benchmark sequence. Measured
-    // last in BENCHMARKS.md, "Issue 32, part 7" (mean refined ATE, off -> on): walking over 20
-    // seeds 0.047 -> 0.044, room_tour (with loop closing) 0.104 -> 0.027, but Bonn 0.052 -> 0.057,
-    // TUM rpy 0-119 0.032 -> 0.039 and walking_static 0.012 -> 0.013. Its BA rejects 20-40 % of
-    // the measurements on real data (rpy: the inliers fit, chi2/dof 0.9-1.06; the rest is a tail).
+    // last in BENCHMARKS.md, "Issue 32, part 6" (mean ATE, off -> on): Bonn 0.0566 -> 0.0556,
+    // close_person 0.0199 -> 0.0168, room_tour (with loop closing) 0.120 -> 0.036, but TUM rpy
+    // 0-119 0.0324 -> 0.0336, walking over 20 seeds 0.068 -> 0.072 and walking_static 0.015 ->
+    // 0.050 (one seed jumps while a walker fills the view). Its BA rejects 20-40 % of the
+    // measurements on real data (rpy: the inliers fit, chi2/dof 0.9-1.06; the rest is a tail).
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);
     // Algorithm 1 (window_static_points.h) runs before local BA (with static_points.enabled),
     // which then uses the points that stayed marked. Window keyframes sharing fewer than 20

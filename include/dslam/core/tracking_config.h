@@ -30,7 +30,6 @@ struct TrackingConfig {
   bool fuse_static_points = false;
   double dynamic_neighbour_radius_px = 40.0;
   double cull_min_found_ratio = 0.25;
-  int cull_young_keyframes = 3;
   int keep_static_frames = 90;
   int verify_frames = 6;
   int isolated_frames_to_unmark = 3;
@@ -130,14 +129,6 @@ struct TrackingConfig {
     // Checked once a point was visible in 8 frames (kCullMinVisible, odometry_steps.cpp).
     v(Field("cull_min_found_ratio", "-", 0.0, 1.0, "found/visible ratio below this: cull"),
       s.cull_min_found_ratio);
-    // While people cover the background, its points are predicted visible and not found: a
-    // ratio checked for life culls the background the tracker needs when the view clears. As in
-    // ORB-SLAM2 (which checks only recently created points), a point is checked only while it is
-    // young, to cull false matches and points on things that moved at once. 0: every point, for
-    // life. Measured in BENCHMARKS.md, "Issue 32, part 7".
-    v(Field("cull_young_keyframes", "keyframes", 0, 1000,
-            "found/visible ratio checked only for points made by the newest this many keyframes"),
-      s.cull_young_keyframes);
     // E.g. points hidden by a person standing in front of the camera are found again when the
     // view clears. 0: only window points.
     v(Field("keep_static_frames", "frames", 0, 100000,

@@ -207,11 +207,10 @@ class Map {
 
   /// Removes points that are neither referenced by a map keyframe nor seen since
   /// `oldest_frame_to_keep` (verified static points: since `static_seen_since_frame`, when it is
-  /// earlier), and points created after `ratio_checked_after_frame` whose found/visible ratio
-  /// fell below `min_found_ratio` after `min_visible` sightings (a negative frame: every point);
-  /// never a frozen point. Returns the number removed.
+  /// earlier), and points whose found/visible ratio fell below `min_found_ratio` after
+  /// `min_visible` sightings; never a frozen point. Returns the number removed.
   int Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
-           int static_seen_since_frame = -1, int ratio_checked_after_frame = -1);
+           int static_seen_since_frame = -1);
 
   /// A map of the keyframe window alone: the keyframes and every point they reference (in
   /// `points` or `measurements`), with the same ids; for the back end to work on while tracking
