@@ -20,6 +20,18 @@ Eigen::Isometry3d TrueCameraWorld(int k) {
   return T_world_camera.inverse();
 }
 
+// A measurement of `p_world` by a keyframe at `T_camera_world`, with noise drawn by `n` from
+// `rng` (kSigmaXy, kSigmaZ in the camera frame) and that noise's covariance.
+PointMeasurement NoisyMeasurement(const Eigen::Isometry3d& T_camera_world,
+                                  const Eigen::Vector3d& p_world,
+                                  std::normal_distribution<double>* n, std::mt19937* rng) {
+  PointMeasurement m;
+  m.covariance = Eigen::Vector3d(kSigmaXy, kSigmaXy, kSigmaZ).cwiseAbs2().asDiagonal();
+  m.y_camera = T_camera_world * p_world +
+               Eigen::Vector3d((*n)(*rng) * kSigmaXy, (*n)(*rng) * kSigmaXy, (*n)(*rng) * kSigmaZ);
+  return m;
+}
+
 struct Scene {
   Map map;
   std::vector<PointId> static_ids, moving_ids;
@@ -42,7 +54,6 @@ Scene MakeScene(int keyframes, double box_step_m, unsigned seed, int num_static 
     p_world.push_back(point.p_world);
     (moving ? scene.moving_ids : scene.static_ids).push_back(scene.map.AddPoint(point));
   }
-  const Eigen::Vector3d sigma(kSigmaXy, kSigmaXy, kSigmaZ);
   for (int k = 0; k < keyframes; ++k) {
     KeyFrame keyframe;
     keyframe.frame_index = 10 * k;
@@ -52,11 +63,8 @@ Scene MakeScene(int keyframes, double box_step_m, unsigned seed, int num_static 
       const PointId id = static_cast<PointId>(i);
       const bool moving = static_cast<int>(i) >= num_static;
       const Eigen::Vector3d p = p_world[i] + Eigen::Vector3d(moving ? box_step_m * k : 0.0, 0, 0);
-      PointMeasurement m;
-      m.covariance = sigma.cwiseAbs2().asDiagonal();
-      m.y_camera = keyframe.measurements.T_camera_world * p +
-                   Eigen::Vector3d(n(rng) * kSigmaXy, n(rng) * kSigmaXy, n(rng) * kSigmaZ);
-      keyframe.measurements.by_point.emplace(id, m);
+      keyframe.measurements.by_point.emplace(
+          id, NoisyMeasurement(keyframe.measurements.T_camera_world, p, &n, &rng));
       keyframe.points.push_back(id);
     }
     scene.map.AddKeyFrame(keyframe, KeyFrameMapLimits::Newest(100));
@@ -85,10 +93,7 @@ std::vector<PointId> AddGlitchCluster(Scene* scene, const Eigen::Vector3d& centr
   for (size_t k = 0; k < keyframes.size(); ++k) {
     FrameMeasurements& frame = keyframes[k].measurements;
     for (int i = 0; i < count; ++i) {
-      PointMeasurement m;
-      m.covariance = Eigen::Vector3d(kSigmaXy, kSigmaXy, kSigmaZ).cwiseAbs2().asDiagonal();
-      m.y_camera = frame.T_camera_world * p_world[i] +
-                   Eigen::Vector3d(n(rng) * kSigmaXy, n(rng) * kSigmaXy, n(rng) * kSigmaZ);
+      PointMeasurement m = NoisyMeasurement(frame.T_camera_world, p_world[i], &n, &rng);
       if (static_cast<int>(k) == glitch_keyframe) m.y_camera += offset;
       frame.by_point.emplace(ids[i], m);
       keyframes[k].points.push_back(ids[i]);
