@@ -1,30 +1,94 @@
 #include "dslam/backend/refined_trajectory.h"
 
 namespace dslam {
+namespace {
+
+/// Appends `entry` to `open`, moving `open` into `blocks` as a full block at `block` entries.
+template <typename T, typename Blocks>
+void Append(T entry, size_t block, std::vector<T>* open, Blocks* blocks) {
+  open->push_back(std::move(entry));
+  if (open->size() < block) return;
+  blocks->push_back(std::make_shared<const std::vector<T>>(std::move(*open)));
+  open->clear();
+  open->reserve(block);
+}
+
+RefinedTrajectory::Frame Compact(double stamp_s, int keyframe_id,
+                                 const Eigen::Isometry3d& T_keyframe_camera) {
+  const Eigen::Vector3d& t = T_keyframe_camera.translation();
+  const Eigen::Quaterniond q(T_keyframe_camera.rotation());
+  return {stamp_s,
+          keyframe_id,
+          {static_cast<float>(t.x()), static_cast<float>(t.y()), static_cast<float>(t.z())},
+          {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()),
+           static_cast<float>(q.w())}};
+}
+
+Eigen::Isometry3d Expand(const RefinedTrajectory::Frame& frame) {
+  const float* q = frame.q_keyframe_camera;
+  const float* t = frame.t_keyframe_camera;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized().toRotationMatrix();
+  T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
+  return T;
+}
+
+}  // namespace
 
 void RefinedTrajectory::AddFrame(double stamp_s, const Eigen::Isometry3d& T_world_camera,
                                  const Map& map) {
   if (map.keyframes().empty()) return;
   const KeyFrame& reference = map.keyframes().back();
-  T_world_keyframe_[reference.id] = reference.T_world_camera;
-  frames_.push_back({stamp_s, reference.id, reference.T_world_camera.inverse() * T_world_camera});
+  live_[reference.id] = reference.T_world_camera;
+  if (live_.size() > live_limit_) RetireErased(map);
+  const Frame frame =
+      Compact(stamp_s, reference.id, reference.T_world_camera.inverse() * T_world_camera);
+  const size_t blocks = frame_blocks_.size();
+  Append(frame, kBlock, &open_frames_, &frame_blocks_);
+  full_frames_ += frame_blocks_.size() - blocks;
 }
 
 void RefinedTrajectory::UpdateKeyFrames(const Map& map) {
-  for (const KeyFrame& keyframe : map.keyframes()) {
-    T_world_keyframe_[keyframe.id] = keyframe.T_world_camera;
-  }
+  for (const KeyFrame& keyframe : map.keyframes()) live_[keyframe.id] = keyframe.T_world_camera;
   for (const auto& [id, keyframe] : map.archived_keyframes()) {
-    T_world_keyframe_[id] = keyframe.T_world_camera;
+    live_[id] = keyframe.T_world_camera;
   }
+  RetireErased(map);
 }
 
-Trajectory RefinedTrajectory::Poses() const {
+void RefinedTrajectory::RetireErased(const Map& map) {
+  for (auto it = live_.begin(); it != live_.end();) {
+    if (map.FindKeyFrame(it->first) != nullptr) {
+      ++it;
+      continue;
+    }
+    Append(std::make_pair(it->first, it->second), kBlock, &open_erased_, &erased_);
+    it = live_.erase(it);
+  }
+  live_limit_ = 2 * live_.size() + 64;
+}
+
+RefinedTrajectory::Snapshot RefinedTrajectory::Take() const {
+  Snapshot snapshot;
+  snapshot.frames = frame_blocks_;
+  snapshot.frames.push_back(std::make_shared<const std::vector<Frame>>(open_frames_));
+  snapshot.erased = erased_;
+  snapshot.erased.push_back(
+      std::make_shared<const std::vector<std::pair<int, Eigen::Isometry3d>>>(open_erased_));
+  snapshot.live = live_;
+  return snapshot;
+}
+
+Trajectory RefinedTrajectory::Snapshot::Poses() const {
+  std::unordered_map<int, Eigen::Isometry3d> T_world_keyframe = live;
+  for (const auto& block : erased) {
+    for (const auto& [id, T] : *block) T_world_keyframe.emplace(id, T);  // live ones win
+  }
   Trajectory poses;
-  poses.reserve(frames_.size());
-  for (const Frame& frame : frames_) {
-    poses.push_back(
-        {frame.stamp_s, T_world_keyframe_.at(frame.keyframe_id) * frame.T_keyframe_camera});
+  for (const auto& block : frames) {
+    for (const Frame& frame : *block) {
+      poses.push_back({frame.stamp_s, T_world_keyframe.at(frame.keyframe_id) * Expand(frame)});
+    }
   }
   return poses;
 }

@@ -1,10 +1,14 @@
 #include "dslam/backend/slam.h"
 
+#include <exception>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include <opencv2/core.hpp>
 
 #include "dslam/core/stopwatch.h"
+#include "dslam/features/features.h"
 
 namespace dslam {
 namespace {
@@ -24,6 +28,7 @@ Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined,
     : mode_(mode),
       refined_recording_(refined),
       observers_(std::move(observers)),
+      errors_(std::make_shared<ErrorLog>()),
       odometry_(config) {
   if (mode_ == BackEndMode::kThreaded) {
     CreateMatrixExpressionOperations();
@@ -32,14 +37,21 @@ Slam::Slam(const Config& config, BackEndMode mode, RefinedPoseRecording refined,
 }
 
 FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
-  const Stopwatch tracking;  // this thread's time: waiting for the lock, front end, bookkeeping
-  Lock lock(map_mutex_);
-  RethrowBackEndError();
-  // Front end (Sec. V-A, V-B): features, local-map matching, pose from static points, front-end
-  // static point determination, map management and keyframes. The observers need the labels.
+  const Stopwatch tracking;  // this thread's time: features, waiting for the lock, front end
+  const std::string problem = frame.Check();
+  if (!problem.empty()) throw std::invalid_argument("dslam: bad frame: " + problem);
+  // Front end (Sec. V-A, V-B). ORB features with depth read nothing of the map: extracted
+  // before the map lock is taken, so that the back end and loop closing are not kept waiting.
+  const Stopwatch extraction;
+  FrameFeatures features = ExtractFeatures(frame, config().features, config().depth_noise);
+  const double features_ms = extraction.ElapsedMs();
+  Lock lock(map_mutex_, &longest_hold_, "tracking");
+  // Local-map matching, pose from static points, front-end static point determination, map
+  // management and keyframes. The observers need the labels.
   FrameRequest front_end_request = request;
   if (!observers_.empty()) front_end_request.points = true;
-  FrameResult result = odometry_.ProcessFrame(frame, front_end_request);
+  FrameResult result =
+      odometry_.ProcessFrame(frame, std::move(features), features_ms, front_end_request);
   if (result.reset) {
     DropBackEndWork();  // the old world's keyframes and runs
     QueueReset(ResetMode::kNewWorld);
@@ -55,12 +67,24 @@ FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& reque
   result.times.tracking_ms = tracking.ElapsedMs();
   if (mode_ == BackEndMode::kThreaded) return result;
   // Back end (Sec. V): local mapping on the window the new keyframe completes.
-  if (result.keyframe && config().backend.enabled) result.backend = RunLocalMapping();
-  if (!HasBackEndWork()) return result;  // synchronous: only the observers' events
-  const Delivery delivery = TakeEvents();
-  lock.unlock();
-  Deliver(delivery);
+  if (result.keyframe && config().backend.enabled) {
+    try {
+      result.backend = RunLocalMapping();
+    } catch (const std::exception& e) {
+      errors_->Report("back end", e.what());  // this frame's pose stands; the next is tracked
+    }
+  }
+  DeliverQueuedEvents(lock);
   return result;
+}
+
+void Slam::DeliverQueuedEvents(Lock& lock) {
+  while (HasBackEndWork()) {  // synchronous: only the observers' events
+    const Delivery delivery = TakeEvents();
+    lock.unlock();
+    Deliver(delivery);
+    lock.lock();
+  }
 }
 
 void Slam::QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* result) {
@@ -94,27 +118,37 @@ Slam::Delivery Slam::TakeEvents() {
 void Slam::Deliver(const Delivery& delivery) const {
   // Keyframes in groups between resets; the window's poses belong to the newest group (the
   // observers forget or fix older groups at the reset that ends them).
+  // Each observer's call on its own: an exception is reported and the next observer goes on.
+  const auto each = [this](const std::function<void(KeyFrameObserver&)>& call) {
+    for (const auto& observer : observers_) {
+      try {
+        call(*observer);
+      } catch (const std::exception& e) {
+        errors_->Report(observer->name(), e.what());
+      } catch (...) {
+        errors_->Report(observer->name(), "unknown exception");
+      }
+    }
+  };
   size_t begin = 0;
   const auto deliver_keyframes = [&](size_t end) {
     if (end == begin) return;
     if (begin == 0 && end == delivery.keyframes.size()) {  // no reset among them: no copy
-      for (const auto& observer : observers_) {
-        observer->OnKeyFrames(delivery.keyframes, delivery.window);
-      }
+      each([&](KeyFrameObserver& o) { o.OnKeyFrames(delivery.keyframes, delivery.window); });
     } else {
       const std::vector<KeyFrameRecord> group(delivery.keyframes.begin() + begin,
                                               delivery.keyframes.begin() + end);
-      for (const auto& observer : observers_) observer->OnKeyFrames(group, delivery.window);
+      each([&](KeyFrameObserver& o) { o.OnKeyFrames(group, delivery.window); });
     }
     begin = end;
   };
   for (const auto& [keyframes_before, mode] : delivery.resets) {
     deliver_keyframes(keyframes_before);
-    for (const auto& observer : observers_) observer->OnReset(mode);
+    each([mode = mode](KeyFrameObserver& o) { o.OnReset(mode); });
   }
   deliver_keyframes(delivery.keyframes.size());
   if (delivery.corrected.empty()) return;
-  for (const auto& observer : observers_) observer->OnCorrection(delivery.corrected);
+  each([&](KeyFrameObserver& o) { o.OnCorrection(delivery.corrected); });
 }
 
 BackEndStatus Slam::RunLocalMapping() {
@@ -138,7 +172,7 @@ BackEndStatus Slam::FinishLocalMapping(const LocalMappingJob& job) {
 Slam::~Slam() {
   if (back_end_.joinable()) {
     {
-      const Lock lock(map_mutex_);
+      const Lock lock(map_mutex_, &longest_hold_, "stop");
       stop_ = true;  // a job in progress finishes, then the thread ends
     }
     work_.notify_all();
@@ -148,7 +182,7 @@ Slam::~Slam() {
 }
 
 void Slam::BackEndLoop() {
-  Lock lock(map_mutex_);
+  Lock lock(map_mutex_, &longest_hold_, "back end");
   for (;;) {
     work_.wait(lock, [this] { return stop_ || (HasBackEndWork() && !held_); });
     if (stop_) return;  // queued keyframes and events are dropped
@@ -171,9 +205,9 @@ void Slam::BackEndLoop() {
         Deliver(delivery);
         lock.lock();
       }
-    } catch (...) {
+    } catch (const std::exception& e) {  // the run's results are dropped; tracking goes on
       if (!lock.owns_lock()) lock.lock();
-      error_ = std::current_exception();
+      errors_->Report("back end", e.what());
     }
     running_ = false;
     idle_.notify_all();
@@ -194,12 +228,6 @@ void Slam::ExchangeWithBackEnd(FrameResult* result) {
   thread.backlog = pending_;
 }
 
-void Slam::RethrowBackEndError() {
-  if (!error_) return;
-  const std::exception_ptr error = std::exchange(error_, nullptr);
-  std::rethrow_exception(error);
-}
-
 void Slam::Reset(ResetMode mode) {
   ResetOdometry(mode, [&] { odometry_.Reset(mode); }, {});
 }
@@ -214,18 +242,18 @@ void Slam::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeo
 }
 
 void Slam::SetPlaceLookup(std::shared_ptr<PlaceLookup> places) {
-  Lock lock(map_mutex_);
+  Lock lock(map_mutex_, &longest_hold_, "control");
   odometry_.SetPlaceLookup(std::move(places));
 }
 
 bool Slam::Localising() const {
-  Lock lock(map_mutex_);
+  Lock lock(map_mutex_, &longest_hold_, "control");
   return odometry_.localising();
 }
 
 void Slam::ResetOdometry(ResetMode mode, const std::function<void()>& reset,
                          std::vector<KeyFrameRecord> after_reset) {
-  Lock lock(map_mutex_);
+  Lock lock(map_mutex_, &longest_hold_, "reset");
   DropBackEndWork();
   reset();
   QueueReset(mode);
@@ -235,9 +263,7 @@ void Slam::ResetOdometry(ResetMode mode, const std::function<void()>& reset,
     work_.notify_one();
     return;
   }
-  const Delivery delivery = TakeEvents();
-  lock.unlock();
-  Deliver(delivery);
+  DeliverQueuedEvents(lock);
 }
 
 void Slam::DropBackEndWork() {
@@ -247,17 +273,18 @@ void Slam::DropBackEndWork() {
 }
 
 void Slam::WaitForBackEnd() {
-  Lock lock(map_mutex_);
-  if (held_ || results_held_) {
-    held_ = results_held_ = false;
-    work_.notify_all();
+  Lock lock(map_mutex_, &longest_hold_, "wait for the back end");
+  if (mode_ == BackEndMode::kSynchronous) {
+    DeliverQueuedEvents(lock);  // a correction made since the last frame
+    return;
   }
+  held_ = results_held_ = false;
+  work_.notify_all();  // also wakes the thread for events queued without a frame (a correction)
   idle_.wait(lock, [this] { return !HasBackEndWork() && !running_; });
-  RethrowBackEndError();
 }
 
 std::vector<BackEndStatus> Slam::TakeUnreportedRuns() {
-  const Lock lock(map_mutex_);
+  const Lock lock(map_mutex_, &longest_hold_, "control");
   std::vector<BackEndStatus> runs(completed_.begin(), completed_.end());
   completed_.clear();
   return runs;
@@ -265,7 +292,7 @@ std::vector<BackEndStatus> Slam::TakeUnreportedRuns() {
 
 void Slam::HoldBackEnd(bool hold) {
   {
-    const Lock lock(map_mutex_);
+    const Lock lock(map_mutex_, &longest_hold_, "control");
     held_ = hold && mode_ == BackEndMode::kThreaded;
   }
   work_.notify_all();
@@ -273,35 +300,59 @@ void Slam::HoldBackEnd(bool hold) {
 
 void Slam::HoldBackEndResults(bool hold) {
   {
-    const Lock lock(map_mutex_);
+    const Lock lock(map_mutex_, &longest_hold_, "control");
     results_held_ = hold && mode_ == BackEndMode::kThreaded;
   }
   work_.notify_all();
 }
 
+LockHold Slam::TakeLongestMapLockHold() {
+  const Lock lock(map_mutex_, &longest_hold_, "lock meter");
+  return std::exchange(longest_hold_, LockHold());
+}
+
 Trajectory Slam::RefinedPoses() const {
-  const Lock lock(map_mutex_);
-  return refined_.Poses();
+  RefinedTrajectory::Snapshot snapshot;
+  {
+    const Lock lock(map_mutex_, &longest_hold_, "refined trajectory");
+    snapshot = refined_.Take();  // a few block pointers and the keyframes in the map
+  }
+  return snapshot.Poses();
 }
 
 Map Slam::MapSnapshot() const {
-  const Lock lock(map_mutex_);
+  const Lock lock(map_mutex_, &longest_hold_, "map snapshot");
   return map();
 }
 
 void Slam::ReadMap(const std::function<void(const Map&)>& read) const {
-  const Lock lock(map_mutex_);
+  const Lock lock(map_mutex_, &longest_hold_, "map reader (loop detection)");
   read(map());
 }
 
 bool Slam::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected) {
-  const Lock lock(map_mutex_);
+  return CorrectKeyFrames(T_world_camera_corrected, {});
+}
+
+bool Slam::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected,
+                            const std::map<int, Eigen::Isometry3d>& T_world_camera_before) {
+  {
+    const Lock lock(map_mutex_, &longest_hold_, "loop correction");
+    if (!ApplyCorrection(T_world_camera_corrected, T_world_camera_before)) return false;
+  }
+  // Threaded: the back-end thread delivers the correction even when no frame follows.
+  if (mode_ == BackEndMode::kThreaded && !observers_.empty()) work_.notify_one();
+  return true;
+}
+
+bool Slam::ApplyCorrection(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected,
+                           const std::map<int, Eigen::Isometry3d>& T_world_camera_before) {
   Map* live = odometry_.mutable_map();
   if (T_world_camera_corrected.empty() ||
       live->FindKeyFrame(T_world_camera_corrected.rbegin()->first) == nullptr) {
     return false;
   }
-  live->CorrectKeyFrames(T_world_camera_corrected);
+  live->CorrectKeyFrames(T_world_camera_corrected, T_world_camera_before);
   odometry_.AdoptNewestKeyFramePose();
   if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
   if (!observers_.empty()) {  // delivered with the next events (the static map follows)

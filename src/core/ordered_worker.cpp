@@ -6,8 +6,12 @@
 
 namespace dslam {
 
-OrderedWorker::OrderedWorker(WorkerMode mode, int max_pending)
-    : mode_(mode), max_pending_(max_pending) {
+OrderedWorker::OrderedWorker(WorkerMode mode, int max_pending, std::shared_ptr<ErrorLog> errors,
+                             std::string where)
+    : mode_(mode),
+      max_pending_(max_pending),
+      errors_(errors ? std::move(errors) : std::make_shared<ErrorLog>()),
+      where_(std::move(where)) {
   if (max_pending < 1) {
     throw std::invalid_argument("OrderedWorker: max_pending must be >= 1, is " +
                                 std::to_string(max_pending));
@@ -27,34 +31,34 @@ OrderedWorker::~OrderedWorker() {
 
 void OrderedWorker::Post(std::function<void()> task) {
   if (mode_ == WorkerMode::kSynchronous) {
-    task();
+    RunTask(task);
     return;
   }
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [this] { return static_cast<int>(queue_.size()) < max_pending_; });
   queue_.push_back(std::move(task));
   changed_.notify_all();
-  RethrowLocked(lock);
+}
+
+void OrderedWorker::RunTask(const std::function<void()>& task) {
+  try {
+    task();
+  } catch (const std::exception& e) {
+    errors_->Report(where_, e.what());
+  } catch (...) {
+    errors_->Report(where_, "unknown exception");
+  }
 }
 
 void OrderedWorker::Wait() {
   if (mode_ == WorkerMode::kSynchronous) return;
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [this] { return queue_.empty() && !busy_; });
-  RethrowLocked(lock);
 }
 
 int OrderedWorker::Pending() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return static_cast<int>(queue_.size()) + (busy_ ? 1 : 0);
-}
-
-void OrderedWorker::RethrowLocked(std::unique_lock<std::mutex>& lock) {
-  if (!error_) return;
-  std::exception_ptr error = std::move(error_);
-  error_ = nullptr;
-  lock.unlock();
-  std::rethrow_exception(error);
 }
 
 void OrderedWorker::Run() {
@@ -67,14 +71,8 @@ void OrderedWorker::Run() {
     busy_ = true;
     changed_.notify_all();  // a slot is free for Post
     lock.unlock();
-    std::exception_ptr error;
-    try {
-      task();
-    } catch (...) {
-      error = std::current_exception();
-    }
+    RunTask(task);
     lock.lock();
-    if (error && !error_) error_ = error;
     busy_ = false;
     changed_.notify_all();
   }

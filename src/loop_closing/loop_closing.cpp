@@ -3,6 +3,7 @@
 #include <cmath>
 #include <exception>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "dslam/core/geometry.h"
@@ -16,7 +17,9 @@ LoopClosing::LoopClosing(const Config& config, std::shared_ptr<const Vocabulary>
     : config_(config.loop_closing),
       pose_config_(config.pose),
       vocabulary_(std::move(vocabulary)),
-      worker_(std::make_unique<OrderedWorker>(mode, kMaxQueuedKeyFrames)) {}
+      errors_(std::make_shared<ErrorLog>()),
+      worker_(std::make_unique<OrderedWorker>(mode, kMaxQueuedKeyFrames, errors_, "loop closing")) {
+}
 
 void LoopClosing::Attach(Slam* slam) {
   slam_ = slam;
@@ -53,12 +56,7 @@ void LoopClosing::Wait() { worker_->Wait(); }
 
 void LoopClosing::OnStop() {
   stopping_ = true;
-  try {
-    worker_->Wait();
-  } catch (const std::exception&) {
-    // Called from ~Slam, which must not throw: an error of the last keyframe's work is dropped
-    // with the keyframes skipped after it.
-  }
+  worker_->Wait();  // never throws: errors went to errors_
   slam_ = nullptr;
 }
 
@@ -84,7 +82,19 @@ bool LoopClosing::ProcessKeyFrame(int id) {
   });
   if (!loop || !searching) return false;
   const std::map<int, Eigen::Isometry3d> corrected = CorrectedKeyFramePoses(graph);
-  if (corrected.empty() || !slam_->CorrectKeyFrames(corrected)) return false;
+  std::map<int, Eigen::Isometry3d> before;  // the poses the correction was computed from
+  for (const auto& [node_id, node] : graph.nodes) before[node_id] = node.T_world_camera;
+  const char* dropped = corrected.empty() ? "the pose graph solve failed"
+                        : !slam_->CorrectKeyFrames(corrected, before) ? "the map refused it (reset)"
+                                                                      : nullptr;
+  if (dropped != nullptr) {
+    errors_->Report("loop closing", "verified loop " + std::to_string(loop->query_keyframe_id) +
+                                        " -> " + std::to_string(loop->match_keyframe_id) +
+                                        " dropped: " + dropped);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ++dropped_loops_;
+    return false;
+  }
   keyframes_since_loop_ = 0;
   loop_edges_.push_back(edge);
   const Eigen::Isometry3d moved =
@@ -142,6 +152,7 @@ LoopWork LoopClosing::work() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   LoopWork work;
   work.loops = static_cast<int>(loops_.size());
+  work.dropped = dropped_loops_;
   work.keyframes = static_cast<int>(times_ms_.size());
   if (!times_ms_.empty()) work.last_ms = times_ms_.back();
   return work;

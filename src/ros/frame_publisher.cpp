@@ -179,6 +179,7 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
   s.frames_processed = counters.processed;
   s.frames_dropped = counters.dropped;
   s.frames_rejected = counters.rejected;
+  s.errors = counters.errors;
   status_pub_.publish(s);
 }
 

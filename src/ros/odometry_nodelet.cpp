@@ -33,7 +33,10 @@ OdometryNodelet::~OdometryNodelet() {
   if (worker_.joinable()) worker_.join();
   if (keyframe_maps_ && slam_) {
     slam_->WaitForBackEnd();
-    keyframe_maps_->SaveOnExit();
+    if (loop_closing_) loop_closing_->Wait();
+    slam_->WaitForBackEnd();       // the last loop's correction reaches the observers
+    keyframe_maps_->SaveOnExit();  // logs its own error
+    LogBackgroundErrors();
   }
   map_publisher_.reset();  // stops its timer and service (the worker used it until now)
 }

@@ -17,6 +17,29 @@ void OdometryNodelet::WorkerLoop() {
       ++rejected_;
       NODELET_ERROR_THROTTLE(1.0, "dslam: frame skipped: %s", e.what());
     }
+    LogBackgroundErrors();
+    LogLongestLockHold();
+  }
+}
+
+void OdometryNodelet::LogLongestLockHold() {
+  const ros::WallTime now = ros::WallTime::now();
+  if (last_lock_log_.isZero()) last_lock_log_ = now;
+  if ((now - last_lock_log_).toSec() < 60.0) return;
+  last_lock_log_ = now;
+  const LockHold hold = slam_->TakeLongestMapLockHold();
+  NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", hold.ms,
+               hold.where);
+}
+
+void OdometryNodelet::LogBackgroundErrors() {
+  std::vector<ReportedError> errors = slam_->errors()->TakeNew();
+  if (loop_closing_) {
+    for (ReportedError& error : loop_closing_->errors()->TakeNew()) errors.push_back(error);
+  }
+  for (ReportedError& error : objects_publisher_->errors().TakeNew()) errors.push_back(error);
+  for (const ReportedError& error : errors) {
+    NODELET_ERROR("dslam: error in %s: %s", error.where.c_str(), error.what.c_str());
   }
 }
 
@@ -130,7 +153,11 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
 }
 
 FrameCounters OdometryNodelet::Counters() const {
-  return {received_.load(), processed_.load(), slot_.dropped(), rejected_.load()};
+  uint64_t errors = 0;
+  if (slam_) errors += slam_->errors()->count();
+  if (loop_closing_) errors += loop_closing_->errors()->count();
+  if (objects_publisher_) errors += objects_publisher_->errors().count();
+  return {received_.load(), processed_.load(), slot_.dropped(), rejected_.load(), errors};
 }
 
 const Eigen::Isometry3d& OdometryNodelet::CameraMount(const std::string& camera_frame,

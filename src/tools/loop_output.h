@@ -29,8 +29,11 @@ class LoopOutput {
   /// Gives the loop closer the Slam it corrects; call before the first frame.
   void Attach(Slam* slam);
   bool enabled() const { return closer_ != nullptr; }  ///< loop closing runs
-  /// Returns when loop closing processed every keyframe; call after Slam::WaitForBackEnd.
+  /// Returns when loop closing processed every keyframe; call after Slam::WaitForBackEnd, and
+  /// Slam::WaitForBackEnd again after it so that the last correction reaches the observers.
   void Wait();
+  /// Loop closing's errors (LoopClosing::errors); null when it is off.
+  std::shared_ptr<ErrorLog> errors() const { return closer_ ? closer_->errors() : nullptr; }
 
   /// Writes the accepted loops to `path` (loop_io.h) when not empty; call after Wait.
   void Write(const std::string& path) const;

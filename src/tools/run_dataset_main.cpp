@@ -125,6 +125,15 @@ void OpenOutputs(const Args& args, const dslam::Config& config, Outputs* out) {
   }
 }
 
+// Prints the errors `log` took since the last call (each once, where it happened) to stderr.
+void PrintNewErrors(dslam::ErrorLog* log) {
+  if (log == nullptr) return;
+  for (const dslam::ReportedError& error : log->TakeNew()) {
+    std::fprintf(stderr, "dslam_run_dataset: error in %s: %s\n", error.where.c_str(),
+                 error.what.c_str());
+  }
+}
+
 // Adds one frame's result to the trajectory, summary, CSVs and segmentation score.
 void Record(const Args& args, const dslam::FrameResult& r, Outputs* out) {
   out->summary.Add(r);
@@ -155,6 +164,7 @@ void FeedFrames(const Args& args, const dslam::TumDataset& dataset, dslam::Slam*
                                         std::chrono::duration<double>(i / args.rate_hz)));
     }
     const dslam::FrameResult r = slam->ProcessFrame(frame);
+    PrintNewErrors(slam->errors().get());
     if (out->objects) out->objects->Add(frame, r);
     Record(args, r, out);
     if (!args.quiet) {
@@ -238,7 +248,10 @@ int Run(const Args& args) {
   Outputs out;
   OpenOutputs(args, config, &out);
   FeedFrames(args, dataset, &slam, &out);
-  loops.Wait();  // its last correction reaches the refined trajectory and the saved map
+  loops.Wait();
+  slam.WaitForBackEnd();  // the last loop's correction reaches the observers (the static map)
+  PrintNewErrors(slam.errors().get());
+  PrintNewErrors(loops.errors().get());
   if (out.objects) out.objects->Close();
   maps.Write();
   loops.Write(args.loops);
@@ -260,6 +273,9 @@ int Run(const Args& args) {
     dslam::JsonObject json = SummaryJson(out.summary, out.score, !out.masks.empty(), config, args);
     maps.AddTo(&json);
     loops.AddTo(&json);
+    json.AddNumber("max_map_lock_ms", slam.TakeLongestMapLockHold().ms, 6);
+    json.AddInteger("errors",
+                    slam.errors()->count() + (loops.errors() ? loops.errors()->count() : 0));
     keyframe_map.AddTo(&json);
     if (out.objects) {  // --objects: their work per frame, and the tracking thread's share of it
       json.AddNumber("median_objects_ms", dslam::Median(out.objects->times_ms()), 6)

@@ -228,18 +228,27 @@ void Map::MoveMadeSince(const MapCorrection& correction) {
       correction.first_frame, &correction.T_new_old);
 }
 
-void Map::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected) {
+void Map::CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected,
+                           const std::map<int, Eigen::Isometry3d>& T_world_camera_before) {
   if (T_world_camera_corrected.empty()) return;
+  // T_new_old of a corrected keyframe: from the pose the correction was computed from.
+  const auto correction_of = [&](const KeyFrame& keyframe,
+                                 const Eigen::Isometry3d& T_world_camera_corrected_k) {
+    const auto before = T_world_camera_before.find(keyframe.id);
+    const Eigen::Isometry3d& T_world_camera_old =
+        before == T_world_camera_before.end() ? keyframe.T_world_camera : before->second;
+    return Eigen::Isometry3d(T_world_camera_corrected_k * T_world_camera_old.inverse());
+  };
   const int newest_corrected = T_world_camera_corrected.rbegin()->first;
   Eigen::Isometry3d T_new_old_newest = Eigen::Isometry3d::Identity();
   if (const KeyFrame* newest = FindKeyFrame(newest_corrected)) {
-    T_new_old_newest = T_world_camera_corrected.rbegin()->second * newest->T_world_camera.inverse();
+    T_new_old_newest = correction_of(*newest, T_world_camera_corrected.rbegin()->second);
   }
   MoveKeyFramesAndPoints(
       [&](const KeyFrame& keyframe) -> std::optional<Eigen::Isometry3d> {
         const auto corrected = T_world_camera_corrected.find(keyframe.id);
         if (corrected != T_world_camera_corrected.end()) {
-          return corrected->second * keyframe.T_world_camera.inverse();
+          return correction_of(keyframe, corrected->second);
         }
         if (keyframe.id < newest_corrected) return std::nullopt;  // not in the correction
         return T_new_old_newest;  // made while the correction was computed

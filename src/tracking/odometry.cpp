@@ -42,17 +42,26 @@ void Odometry::Reset(ResetMode mode) {
 FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& request) {
   const std::string problem = frame.Check();
   if (!problem.empty()) throw std::invalid_argument("dslam: bad frame: " + problem);
+  // 1. ORB features with depth and the 3x3 measurement covariance (Sec. V-A).
+  const Stopwatch features;
+  FrameFeatures extracted = ExtractFeatures(frame, config_.features, config_.depth_noise);
+  return ProcessFrame(frame, std::move(extracted), features.ElapsedMs(), request);
+}
+
+FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, FrameFeatures features,
+                                   double features_ms, const FrameRequest& request) {
+  const std::string problem = frame.Check();
+  if (!problem.empty()) throw std::invalid_argument("dslam: bad frame: " + problem);
   request_ = request;
   Stopwatch total, stage;
   FrameResult result;
   result.reset = BeginFrame(frame, &result);
   Current current;
   current.frame = &frame;
-
-  // 1. ORB features with depth and the 3x3 measurement covariance (Sec. V-A).
-  current.features = ExtractFeatures(frame, config_.features, config_.depth_noise);
+  current.features = std::move(features);  // step 1, done by the caller
   current.feature_taken.assign(current.features.features.size(), false);
-  result.times.features_ms = stage.Restart();
+  result.times.features_ms = features_ms;
+  stage.Restart();
   const std::string shortage = FeatureShortage(current.features);
   if (!shortage.empty()) return Lost(&current, std::move(result), shortage.c_str());
   // While starting in a loaded keyframe map (StartInMap): no pose until the frame is
@@ -106,7 +115,7 @@ FrameResult Odometry::ProcessFrame(const RgbdFrame& frame, const FrameRequest& r
   motion_.Update(frame.stamp_s, result.T_world_camera);
   RememberPoseOnNewestKeyFrame(result.frame_index);
   Summarise(current, &result);
-  result.times.total_ms = total.ElapsedMs();
+  result.times.total_ms = result.times.features_ms + total.ElapsedMs();
   return result;
 }
 

@@ -2,7 +2,13 @@
 // its labels, the window's poses, resets in order with the keyframes, the same in both modes, and
 // the calls never overlapping and never on the tracking thread when threaded. Also run under
 // ThreadSanitizer by scripts/sanitize.sh (binary test_slam_threads).
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -185,11 +191,9 @@ TEST(KeyFrameObserver, ACorrectionArrivesAfterTheKeyFramesWithEveryCorrectedPose
     Eigen::Isometry3d moved = map.keyframes().back().T_world_camera;
     moved.translation().x() += 0.1;
     ASSERT_TRUE(slam.CorrectKeyFrames({{newest, moved}}));
-    Feed(&slam, 15, 16, FrameRequest{}, &run);  // the next delivery carries it
-    slam.WaitForBackEnd();
+    slam.WaitForBackEnd();  // delivers it
     ASSERT_FALSE(recorder->events.empty());
-    EXPECT_EQ(recorder->events.back(),
-              "c" + std::to_string(keyframes + run.results.back().keyframe));
+    EXPECT_EQ(recorder->events.back(), "c" + std::to_string(keyframes));
     ASSERT_FALSE(recorder->corrected.empty());
     bool found = false;
     for (const KeyFramePose& pose : recorder->corrected) {
@@ -203,6 +207,112 @@ TEST(KeyFrameObserver, ACorrectionArrivesAfterTheKeyFramesWithEveryCorrectedPose
     slam.Reset(ResetMode::kNewWorld);
     slam.WaitForBackEnd();
     EXPECT_EQ(recorder->events.back(), "r1");
+  }
+}
+
+// Runs `wait` on a thread of its own and fails (ending the process: the hung thread cannot be
+// joined) when it has not returned within `limit_s`.
+void ReturnsWithin(double limit_s, const std::function<void()>& wait) {
+  std::atomic<bool> done{false};
+  std::thread waiter([&] {
+    wait();
+    done = true;
+  });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_s);
+  while (!done && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (!done) {
+    ADD_FAILURE() << "did not return within " << limit_s << " s";
+    std::fflush(nullptr);
+    std::_Exit(1);
+  }
+  waiter.join();
+}
+
+// A loop closed after the last frame (loop closing's thread corrects while no frame follows):
+// WaitForBackEnd delivers the correction and returns, in both modes.
+TEST(KeyFrameObserver, WaitForBackEndReturnsAfterACorrectionWithoutAFrame) {
+  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
+    auto recorder = std::make_shared<Recorder>();
+    Slam slam(WithBackEnd(true), mode, RefinedPoseRecording::kOn, {recorder});
+    Fed run;
+    Feed(&slam, 0, 15, FrameRequest{}, &run);
+    slam.WaitForBackEnd();
+    const Map map = slam.MapSnapshot();
+    Eigen::Isometry3d moved = map.keyframes().back().T_world_camera;
+    moved.translation().x() += 0.1;
+    ASSERT_TRUE(slam.CorrectKeyFrames({{map.keyframes().back().id, moved}}));
+    ReturnsWithin(20.0, [&] { slam.WaitForBackEnd(); });
+    ASSERT_FALSE(recorder->events.empty());
+    EXPECT_EQ(recorder->events.back(), "c" + std::to_string(map.num_keyframes()));
+  }
+}
+
+// Corrects the map from inside OnKeyFrames once armed, as synchronous loop closing does when the
+// last frame's keyframe closes a loop.
+class CorrectingObserver : public KeyFrameObserver {
+ public:
+  void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
+                   const std::vector<KeyFramePose>& window) override {
+    if (!armed || added.empty() || window.empty()) return;
+    armed = false;
+    Eigen::Isometry3d moved = window.back().T_world_camera;
+    moved.translation().y() += 0.05;
+    corrected = slam->CorrectKeyFrames({{window.back().id, moved}});
+  }
+  void OnReset(ResetMode) override {}
+  Slam* slam = nullptr;
+  std::atomic<bool> armed{false};
+  bool corrected = false;
+};
+
+TEST(KeyFrameObserver, ALoopClosedAtTheLastKeyFrameReachesTheObserversAndTheWaitReturns) {
+  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
+    auto corrector = std::make_shared<CorrectingObserver>();
+    auto recorder = std::make_shared<Recorder>();
+    Slam slam(WithBackEnd(true), mode, RefinedPoseRecording::kOn, {corrector, recorder});
+    corrector->slam = &slam;
+    Fed run;
+    Feed(&slam, 0, 10, FrameRequest{}, &run);
+    slam.WaitForBackEnd();
+    corrector->armed = true;
+    for (int i = 10; i < kFrames && corrector->armed; ++i) Feed(&slam, i, i + 1, {}, &run);
+    ReturnsWithin(20.0, [&] { slam.WaitForBackEnd(); });
+    EXPECT_TRUE(corrector->corrected);
+    ASSERT_FALSE(recorder->events.empty());
+    EXPECT_EQ(recorder->events.back().front(), 'c');
+  }
+}
+
+// Throws from every call.
+class FailingObserver : public KeyFrameObserver {
+ public:
+  void OnKeyFrames(const std::vector<KeyFrameRecord>&, const std::vector<KeyFramePose>&) override {
+    throw std::runtime_error("disk full");
+  }
+  void OnReset(ResetMode) override { throw std::runtime_error("reset failed"); }
+  std::string name() const override { return "failing"; }
+};
+
+// An observer's error is reported once, under its name, and neither reaches ProcessFrame (which
+// would skip a good frame) nor stops the observers after it.
+TEST(KeyFrameObserver, AnObserversErrorIsReportedOnceAndTheOthersGetEveryEvent) {
+  for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
+    auto recorder = std::make_shared<Recorder>();
+    Slam slam(WithBackEnd(true), mode, RefinedPoseRecording::kOn,
+              {std::make_shared<FailingObserver>(), recorder});
+    Fed run;
+    EXPECT_NO_THROW(Feed(&slam, 0, 20, FrameRequest{}, &run));
+    EXPECT_NO_THROW(slam.WaitForBackEnd());
+    ASSERT_GE(run.keyframes.size(), 2u);
+    EXPECT_EQ(recorder->events, run.keyframes);
+    const std::vector<ReportedError> errors = slam.errors()->TakeNew();
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(static_cast<int64_t>(errors.size()), slam.errors()->count());
+    EXPECT_EQ(errors.front().where, "failing");
+    EXPECT_EQ(errors.front().what, "disk full");
+    EXPECT_TRUE(slam.errors()->TakeNew().empty());
   }
 }
 

@@ -1,8 +1,10 @@
-// OrderedWorker: tasks in posting order on one thread, bounded queue, errors handed back.
+// OrderedWorker: tasks in posting order on one thread, bounded queue, errors reported to its
+// ErrorLog and never thrown into the poster.
 #include <atomic>
 #include <chrono>
 #include <future>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -43,7 +45,8 @@ TEST(OrderedWorker, SynchronousRunsEachTaskInsidePost) {
   });
   EXPECT_EQ(runs, 1);  // before Wait
   EXPECT_EQ(ran_on, std::this_thread::get_id());
-  EXPECT_THROW(worker.Post([] { throw std::runtime_error("task failed"); }), std::runtime_error);
+  EXPECT_NO_THROW(worker.Post([] { throw std::runtime_error("task failed"); }));
+  EXPECT_EQ(worker.errors().count(), 1);
 }
 
 TEST(OrderedWorker, PostBlocksWhileMaxPendingTasksWait) {
@@ -69,34 +72,47 @@ TEST(OrderedWorker, PostBlocksWhileMaxPendingTasksWait) {
   EXPECT_EQ(worker.Pending(), 0);
 }
 
-TEST(OrderedWorker, TaskErrorIsRethrownOnceAndLaterTasksStillRun) {
+TEST(OrderedWorker, TaskErrorsAreReportedWhereTheyHappenedAndLaterTasksStillRun) {
   std::promise<void> gate;
   std::shared_future<void> open = gate.get_future().share();
-  OrderedWorker worker(WorkerMode::kThreaded, 4);
+  auto errors = std::make_shared<ErrorLog>();
+  OrderedWorker worker(WorkerMode::kThreaded, 4, errors, "loop closing");
   int after = 0;
-  worker.Post([open] { open.wait(); });  // nothing fails before the last Post
+  worker.Post([open] { open.wait(); });
   worker.Post([] { throw std::runtime_error("first"); });
   worker.Post([] { throw std::runtime_error("second"); });
   worker.Post([&after] { ++after; });
   gate.set_value();
-  try {
-    worker.Wait();
-    FAIL() << "Wait did not rethrow";
-  } catch (const std::runtime_error& error) {
-    EXPECT_STREQ(error.what(), "first");
-  }
+  EXPECT_NO_THROW(worker.Wait());  // never handed to the poster
   EXPECT_EQ(after, 1);
-  EXPECT_NO_THROW(worker.Wait());  // handed back once
+  EXPECT_EQ(errors->count(), 2);
+  const std::vector<ReportedError> taken = errors->TakeNew();
+  ASSERT_EQ(taken.size(), 2u);
+  EXPECT_EQ(taken[0].where, "loop closing");
+  EXPECT_EQ(taken[0].what, "first");
+  EXPECT_EQ(taken[1].what, "second");
+  EXPECT_TRUE(errors->TakeNew().empty());  // reported once
 }
 
-TEST(OrderedWorker, TaskErrorIsRethrownByTheNextPostWhoseTaskStillRuns) {
+TEST(OrderedWorker, APostAfterAFailedTaskDoesNotThrow) {
   OrderedWorker worker(WorkerMode::kThreaded, 2);
   worker.Post([] { throw std::runtime_error("failed"); });
   while (worker.Pending() != 0) std::this_thread::yield();  // the failing task has run
   std::atomic<bool> ran{false};
-  EXPECT_THROW(worker.Post([&ran] { ran = true; }), std::runtime_error);
-  EXPECT_NO_THROW(worker.Wait());  // handed back once
-  EXPECT_TRUE(ran.load());         // queued before the error was handed back
+  EXPECT_NO_THROW(worker.Post([&ran] { ran = true; }));
+  worker.Wait();
+  EXPECT_TRUE(ran.load());
+  EXPECT_EQ(worker.errors().count(), 1);
+}
+
+TEST(ErrorLog, KeepsTheNewestMessagesAndCountsAll) {
+  ErrorLog log(2);
+  for (int i = 0; i < 5; ++i) log.Report("x", std::to_string(i));
+  EXPECT_EQ(log.count(), 5);
+  const std::vector<ReportedError> taken = log.TakeNew();
+  ASSERT_EQ(taken.size(), 2u);
+  EXPECT_EQ(taken[0].what, "3");
+  EXPECT_EQ(taken[1].what, "4");
 }
 
 TEST(OrderedWorker, DestructorRunsTheQueuedTasks) {

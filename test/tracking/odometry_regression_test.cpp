@@ -2,6 +2,8 @@
 // in-process, with static point determination on and off, against ground truth. Tolerances are
 // set from measured values with margin (see the comment at each bound); they catch regressions,
 // not the benchmark targets (BENCHMARKS.md, scripts/benchmark.py).
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "dslam/eval/segmentation_score.h"
@@ -41,6 +43,8 @@ TEST(OdometryRegression, StaticRoomIsAccurateWithAndWithoutStaticPoints) {
   const Rendered rendered = RenderSequence("static_room", 60);
   const RunResult on = RunOdometry(rendered, true);
   const RunResult off = RunOdometry(rendered, false);
+  std::printf("static_room: ATE on %.4f off %.4f, false dynamic %.4f\n", on.metrics.ate_m.rmse,
+              off.metrics.ate_m.rmse, on.score.FalseDynamicRate());
   EXPECT_EQ(on.with_pose, on.frames);
   EXPECT_LT(on.metrics.ate_m.rmse, 0.01);  // measured ~2-3 mm
   // Static point determination must not cost accuracy when nothing moves.
@@ -52,6 +56,9 @@ TEST(OdometryRegression, WalkingPeopleAreSeparatedAndDoNotCaptureThePose) {
   const Rendered rendered = RenderSequence("walking", 90);
   const RunResult on = RunOdometry(rendered, true);
   const RunResult off = RunOdometry(rendered, false);
+  std::printf("walking: ATE on %.4f off %.4f, precision %.3f recall %.3f, false dynamic %.4f\n",
+              on.metrics.ate_m.rmse, off.metrics.ate_m.rmse, on.score.Precision(),
+              on.score.Recall(), on.score.FalseDynamicRate());
   EXPECT_EQ(on.with_pose, on.frames);
   EXPECT_LT(on.metrics.ate_m.rmse, off.metrics.ate_m.rmse);
   EXPECT_GT(on.score.true_dynamic(), 0);

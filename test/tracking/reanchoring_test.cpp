@@ -22,7 +22,7 @@ TEST(WeakEpisode, BeginsAtAWeakPoseAndIsCheckedAtAStrongOneLater) {
   EXPECT_FALSE(episode.Update(11, 59, config));  // weak: the episode begins
   EXPECT_EQ(episode.first_frame(), 11);
   EXPECT_FALSE(episode.Update(12, 20, config));
-  EXPECT_EQ(episode.first_frame(), 11);  // still the first weak frame
+  EXPECT_EQ(episode.first_frame(), 11);           // still the first weak frame
   EXPECT_FALSE(episode.Update(13, 200, config));  // strong but too soon (kMinWeakFrames)
   EXPECT_FALSE(episode.Update(11 + kMinWeakFrames, 100, config));  // between the thresholds
   EXPECT_TRUE(episode.Update(11 + kMinWeakFrames, 120, config));
@@ -181,8 +181,8 @@ TEST(Map, CorrectKeyFramesMovesKeyFramesToTheirPosesAndPointsWithThem) {
   std::map<int, Eigen::Isometry3d> corrected;
   for (int id = 0; id < 3; ++id) {
     const Eigen::Isometry3d T(Eigen::AngleAxisd(0.05 * id, Eigen::Vector3d::UnitY()));
-    corrected[id] = Eigen::Translation3d(0.0, 0.02 * id, 0.0) * T *
-                    before.FindKeyFrame(id)->T_world_camera;
+    corrected[id] =
+        Eigen::Translation3d(0.0, 0.02 * id, 0.0) * T * before.FindKeyFrame(id)->T_world_camera;
   }
   map.CorrectKeyFrames(corrected);
   EXPECT_EQ(map.corrections(), 1u);
@@ -200,6 +200,27 @@ TEST(Map, CorrectKeyFramesMovesKeyFramesToTheirPosesAndPointsWithThem) {
                      : T_new_old_2;
     EXPECT_TRUE(map.Find(id)->p_world.isApprox(T_new_old * before.Find(id)->p_world, 1e-12)) << id;
   }
+}
+
+// A correction computed from older poses (loop closing reads the map, solves without the lock,
+// then corrects) keeps what changed the keyframes since (a local BA run in between): each moves
+// by corrected * before^-1 from where it is now, instead of to the absolute corrected pose.
+TEST(Map, CorrectKeyFramesAppliesTheCorrectionToPosesChangedSinceItWasComputed) {
+  Map map = MapOfFourKeyFrames();
+  const Map read = map;  // what the correction was computed from
+  std::map<int, Eigen::Isometry3d> corrected, before;
+  for (int id = 0; id < 3; ++id) {
+    before[id] = read.FindKeyFrame(id)->T_world_camera;
+    corrected[id] = Eigen::Translation3d(0.0, 0.1, 0.0) * before[id];
+  }
+  // Local BA moves keyframe 1 by 2 cm after the read.
+  const Eigen::Isometry3d refined = Eigen::Translation3d(0.02, 0.0, 0.0) * before[1];
+  map.FindKeyFrame(1)->T_world_camera = refined;
+  map.CorrectKeyFrames(corrected, before);
+  EXPECT_TRUE(map.FindKeyFrame(1)->T_world_camera.isApprox(
+      corrected[1] * before[1].inverse() * refined, 1e-12));
+  EXPECT_FALSE(map.FindKeyFrame(1)->T_world_camera.isApprox(corrected[1], 1e-6));
+  EXPECT_TRUE(map.FindKeyFrame(0)->T_world_camera.isApprox(corrected[0], 1e-12));  // unchanged
 }
 
 }  // namespace

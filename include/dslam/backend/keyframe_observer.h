@@ -6,6 +6,7 @@
 // (threaded mode: Slam's back-end thread after local mapping; synchronous mode: the caller of
 // ProcessFrame and Reset). See slam.h, "Locking policy".
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -44,7 +45,8 @@ struct KeyFramePose {
 };
 
 /// Receives Slam's keyframes in the order they were made, and its resets in order with them.
-/// Calls never overlap; an exception thrown by a call is rethrown by Slam (as a back-end error).
+/// Calls never overlap; an exception thrown by a call is reported to Slam::errors() under name()
+/// and the other observers still get the event.
 class KeyFrameObserver {
  public:
   virtual ~KeyFrameObserver() = default;
@@ -68,6 +70,8 @@ class KeyFrameObserver {
   /// destroying thread. An observer that calls Slam from a thread of its own stops doing so
   /// before it returns. It must not throw (a destructor calls it). The default does nothing.
   virtual void OnStop() {}
+  /// How Slam::errors() names this observer's errors.
+  virtual std::string name() const { return "keyframe observer"; }
 };
 
 }  // namespace dslam

@@ -2,9 +2,20 @@
 // Every frame's pose re-expressed on its reference keyframe after the back end has refined the
 // keyframes (as ORB-SLAM2's trajectory file): T_world_camera = T_world_keyframe (latest) *
 // T_keyframe_camera (fixed when the frame was tracked). The causal trajectory (each pose as
-// estimated at its frame) is what FrameResult reports; this one is for offline evaluation.
+// estimated at its frame) is what FrameResult reports; this one is for offline evaluation and
+// the node's save_refined_trajectory.
+//
+// Memory and copies over hours: a frame costs 40 bytes (T_keyframe_camera in single precision:
+// below 1e-7 m and 1e-7 rad for keyframe offsets under a metre, under the 1e-6 m the trajectory
+// files print). Frames and the poses of keyframes erased from the map are kept in full blocks that
+// are never written again and are shared by snapshots, so Take() copies a few pointers, the open
+// block and the poses of the keyframes still in the map, whatever the run's length: Slam takes it
+// under its map lock and computes the poses after releasing it.
 
+#include <cstdint>
+#include <memory>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -17,26 +28,53 @@ namespace dslam {
 /// Records frames relative to keyframes and follows the keyframes' refined poses.
 class RefinedTrajectory {
  public:
-  /// Records a tracked frame at `stamp_s` [s] with pose T_world_camera, anchored on the newest
-  /// keyframe of `map` (the frame's own keyframe when it became one). Ignored when the map has
-  /// no keyframe.
+  /// A frame as recorded: its stamp [s], its reference keyframe and T_keyframe_camera [m]
+  /// (translation, then rotation as quaternion x, y, z, w).
+  struct Frame {
+    double stamp_s;
+    int32_t keyframe_id;
+    float t_keyframe_camera[3];
+    float q_keyframe_camera[4];
+  };
+  /// What Poses needs, copied cheaply (top of this file).
+  struct Snapshot {
+    std::vector<std::shared_ptr<const std::vector<Frame>>> frames;  ///< full blocks, then the open
+    /// Keyframes erased from the map, at their last pose (full blocks, then the open one).
+    std::vector<std::shared_ptr<const std::vector<std::pair<int, Eigen::Isometry3d>>>> erased;
+    std::unordered_map<int, Eigen::Isometry3d> live;  ///< keyframes in the map [m]
+    /// The frames with their refined poses, in the order they were added.
+    Trajectory Poses() const;
+  };
+
+  /// Records a tracked frame at `stamp_s` [s] with pose T_world_camera [m], anchored on the
+  /// newest keyframe of `map` (the frame's own keyframe when it became one). Ignored when the map
+  /// has no keyframe.
   void AddFrame(double stamp_s, const Eigen::Isometry3d& T_world_camera, const Map& map);
 
   /// Takes the current poses of the keyframes in `map`, window and archive (call after the back
   /// end or a re-anchoring changed them). Keyframes erased from the map keep their last pose.
   void UpdateKeyFrames(const Map& map);
 
-  /// The recorded frames with their refined poses, in the order they were added.
-  Trajectory Poses() const;
+  /// The state Poses() reads; O(keyframes in the map + one block), not O(frames).
+  Snapshot Take() const;
+  /// Take().Poses().
+  Trajectory Poses() const { return Take().Poses(); }
+  /// [-] frames recorded.
+  size_t size() const { return full_frames_ * kBlock + open_frames_.size(); }
+
+  static constexpr size_t kBlock = 4096;  ///< entries per full block
 
  private:
-  struct Frame {
-    double stamp_s;
-    int keyframe_id;
-    Eigen::Isometry3d T_keyframe_camera;
-  };
-  std::vector<Frame> frames_;
-  std::unordered_map<int, Eigen::Isometry3d> T_world_keyframe_;
+  /// Moves keyframes of live_ that `map` no longer has to the erased blocks.
+  void RetireErased(const Map& map);
+
+  std::vector<std::shared_ptr<const std::vector<Frame>>> frame_blocks_;
+  size_t full_frames_ = 0;  ///< [blocks] in frame_blocks_
+  std::vector<Frame> open_frames_;
+  std::vector<std::shared_ptr<const std::vector<std::pair<int, Eigen::Isometry3d>>>> erased_;
+  std::vector<std::pair<int, Eigen::Isometry3d>> open_erased_;
+  std::unordered_map<int, Eigen::Isometry3d> live_;
+  size_t live_limit_ = 64;  ///< RetireErased runs when live_ grows past it
 };
 
 }  // namespace dslam

@@ -11,8 +11,7 @@
 // Locking policy (threaded mode; synchronous mode takes the same lock, uncontended). One mutex,
 // the map mutex, guards all mutable state of Slam: the Odometry (its map, motion model and frame
 // bookkeeping), the RefinedTrajectory and the back-end queue (pending keyframes, the run in
-// progress flag, completed runs, the hold and stop flags, the reset generation, a stored
-// back-end error).
+// progress flag, completed runs, the hold and stop flags, the reset generation).
 // - The tracking thread (the caller of ProcessFrame) holds it for Odometry::ProcessFrame and the
 //   bookkeeping after it (refined trajectory, queueing the keyframe, handing over a completed
 //   run), then releases it before returning.
@@ -23,9 +22,8 @@
 //   is the back-end thread's alone. A Reset while a job runs increments the generation; the job's
 //   results are then dropped.
 // - Every other public member (Reset, StartInMap, Localising, SetPlaceLookup, WaitForBackEnd,
-// TakeUnreportedRuns, HoldBackEnd,
-//   RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames) takes it; getters return copies, never
-//   references into the map. config() is immutable.
+//   TakeUnreportedRuns, HoldBackEnd, RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames)
+//   takes it; getters return copies, never references into the map. config() is immutable.
 // - Keyframe observers (keyframe_observer.h, given to the constructor; the static map): under the
 //   lock the tracking thread queues each new keyframe (a shallow copy of its images and its point
 //   labels) and each reset as events. The thread that delivers them takes the queue and the
@@ -33,11 +31,14 @@
 //   back-end thread after its local mapping run (or without one when the back end is off);
 //   synchronous, the caller at the end of ProcessFrame and Reset. Observers may take locks of
 //   their own: none is ever held together with the map mutex.
-// Nothing else is shared between the threads; no other lock is taken while it is held.
+// - Errors: an exception of a back-end run or of an observer's call is reported to errors()
+//   (ErrorLog, its own lock) where it happened and never rethrown into another call: the other
+//   observers still get their events, the next frame is tracked.
+// Nothing else is shared between the threads; no other lock is taken while it is held (but the
+// ErrorLog's, which takes no other).
 
 #include <condition_variable>
 #include <deque>
-#include <exception>
 #include <functional>
 #include <map>
 #include <memory>
@@ -50,7 +51,9 @@
 #include "dslam/backend/local_bundle_adjustment.h"
 #include "dslam/backend/local_mapping_job.h"
 #include "dslam/backend/refined_trajectory.h"
+#include "dslam/backend/timed_lock.h"
 #include "dslam/core/config.h"
+#include "dslam/core/error_log.h"
 #include "dslam/core/rgbd_frame.h"
 #include "dslam/tracking/frame_result.h"
 #include "dslam/tracking/odometry.h"
@@ -95,8 +98,7 @@ class Slam {
   /// estimated at this frame (causal). Sets times.tracking_ms. `request` chooses the per-frame
   /// lists (FrameRequest). When time went backwards the odometry starts a new world
   /// (FrameResult::reset) and queued keyframes and unreported runs of the old one are dropped.
-  /// Throws std::invalid_argument when frame.Check() fails, and rethrows an exception of the
-  /// back-end thread's last run.
+  /// Throws std::invalid_argument when frame.Check() fails.
   FrameResult ProcessFrame(const RgbdFrame& frame, const FrameRequest& request = {});
 
   /// Drops queued keyframes, unreported runs and the results of a run in progress (which goes on
@@ -123,9 +125,10 @@ class Slam {
   /// call before the first frame. `places` is called from the tracking thread only.
   void SetPlaceLookup(std::shared_ptr<PlaceLookup> places);
 
-  /// Threaded: blocks until no keyframe is queued, no run is in progress and the observers have
-  /// every event (releases both holds first). Synchronous: returns at once. Rethrows an exception
-  /// of the back-end thread.
+  /// Returns when no keyframe is queued, no run is in progress and the observers have every
+  /// event, including a correction queued since the last frame (CorrectKeyFrames). Threaded:
+  /// releases both holds, then waits for the back-end thread. Synchronous: delivers the queued
+  /// events on the calling thread.
   void WaitForBackEnd();
 
   /// The completed runs no FrameResult has reported, oldest first; they count as reported (the
@@ -156,18 +159,32 @@ class Slam {
   /// the map without copying all of it (loop detection). Tracking waits meanwhile: keep it short.
   void ReadMap(const std::function<void(const Map&)>& read) const;
 
-  /// Moves keyframes to corrected poses [m] (a loop correction; Map::CorrectKeyFrames) under the
-  /// map lock: the last tracked pose follows its keyframe (the next frame reports it as
-  /// T_world_previous_camera), the refined trajectory takes the new poses, and a local-mapping
-  /// run copied before it does not write its poses back. False, and nothing changed, when the
-  /// newest corrected keyframe is not in the map any more (a reset came between).
+  /// Moves keyframes by a loop correction (Map::CorrectKeyFrames) under the map lock: each
+  /// keyframe of `T_world_camera_corrected` moves by corrected * before^-1, where before is its
+  /// pose in `T_world_camera_before` (the poses the correction was computed from), so that what
+  /// local mapping refined since is kept. The last tracked pose follows its keyframe (the next
+  /// frame reports it as T_world_previous_camera), the refined trajectory takes the new poses, a
+  /// local-mapping run copied before it does not write its poses back, and the observers receive
+  /// the corrected poses (OnCorrection) with the next delivery or WaitForBackEnd. False, and
+  /// nothing changed, when the newest corrected keyframe is not in the map any more (a reset came
+  /// between). Poses [m], camera optical frame -> world.
+  bool CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected,
+                        const std::map<int, Eigen::Isometry3d>& T_world_camera_before);
+  /// As above with every `before` pose the keyframe's present one.
   bool CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected);
+
+  /// The longest hold of the map lock since the last call (or construction), and its holder
+  /// ("tracking", "back end", "map reader (loop detection)", "refined trajectory", ...); resets it.
+  LockHold TakeLongestMapLockHold();
+
+  /// Errors of back-end runs and observers (shared: loop closing reports its own here).
+  std::shared_ptr<ErrorLog> errors() const { return errors_; }
 
   const Config& config() const { return odometry_.config(); }  ///< immutable
   BackEndMode mode() const { return mode_; }                   ///< as constructed
 
  private:
-  using Lock = std::unique_lock<std::mutex>;
+  using Lock = TimedLock;
 
   /// Drops the back end's work, calls `reset` (which resets the odometry), queues a reset of
   /// `mode` and then `after_reset` for the observers, delivering them as Reset describes.
@@ -183,7 +200,6 @@ class Slam {
   void BackEndLoop();
   /// Threaded bookkeeping after the front end (queue a keyframe, hand over a run); lock held.
   void ExchangeWithBackEnd(FrameResult* result);
-  void RethrowBackEndError();  ///< lock held
   /// Keyframes queued for local mapping or events for the observers (lock held).
   bool HasBackEndWork() const {
     return pending_ > 0 || !events_.keyframes.empty() || !events_.resets.empty() ||
@@ -203,19 +219,28 @@ class Slam {
   void QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* result);
   void QueueReset(ResetMode mode);  ///< queues a reset for the observers; lock held
   Delivery TakeEvents();            ///< the queued events with the window's poses; lock held
-  /// Calls the observers with `delivery`'s events in order (without the lock).
+  /// Calls the observers with `delivery`'s events in order (without the lock); an observer's
+  /// exception goes to errors_ and the others still get the event.
   void Deliver(const Delivery& delivery) const;
+  /// Synchronous: delivers queued events on this thread until none are left (an observer may
+  /// queue more, a loop correction); `lock` is held on entry and on return.
+  void DeliverQueuedEvents(Lock& lock);
   void DropBackEndWork();  ///< forgets queued keyframes and unreported runs; lock held
+  /// CorrectKeyFrames' work on the map, the tracker and the observers' queue; lock held.
+  bool ApplyCorrection(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected,
+                       const std::map<int, Eigen::Isometry3d>& T_world_camera_before);
   const Map& map() const { return odometry_.map(); }  ///< lock held
 
   const BackEndMode mode_;
   const RefinedPoseRecording refined_recording_;
   const std::vector<std::shared_ptr<KeyFrameObserver>> observers_;  ///< as constructed
-  mutable std::mutex map_mutex_;  ///< the one lock: guards every member below (policy above)
+  const std::shared_ptr<ErrorLog> errors_;  ///< its own lock, not the map mutex
+  mutable std::mutex map_mutex_;   ///< the one lock: guards every member below (policy above)
+  mutable LockHold longest_hold_;  ///< of map_mutex_ since the last TakeLongestMapLockHold
   Odometry odometry_;
   RefinedTrajectory refined_;
-  std::condition_variable work_;         ///< back-end thread: work queued, hold released or stop
-  std::condition_variable idle_;         ///< WaitForBackEnd: a run finished
+  std::condition_variable_any work_;     ///< back-end thread: work queued, hold released or stop
+  std::condition_variable_any idle_;     ///< WaitForBackEnd: a run finished
   int pending_ = 0;                      ///< [keyframes] queued and not started (the backlog)
   bool running_ = false;                 ///< the back-end thread works on a job (without the lock)
   uint64_t generation_ = 0;              ///< incremented by each reset: older jobs are dropped
@@ -224,7 +249,6 @@ class Slam {
   bool stop_ = false;                    ///< the destructor asked the thread to end
   std::deque<BackEndStatus> completed_;  ///< runs not yet reported, oldest first
   Delivery events_;                      ///< for the observers, not yet taken
-  std::exception_ptr error_;             ///< the last run's exception, until rethrown
   std::thread back_end_;                 ///< started last, threaded mode only
 };
 

@@ -4,16 +4,23 @@
 // beside the tracking thread (ObjectsOutput, ObjectsPublisher): every frame's objects depend on
 // the frames before them, so they must see the frames in order, but not on the tracking thread.
 //
-// Locking policy: one mutex guards the queue, the busy flag, the stop flag and a stored error;
-// tasks run without it, on the worker thread only, so whatever a task touches is the worker
-// thread's alone while tasks run. Post and Wait are for one thread (the poster).
+// A task's exception is reported to the worker's ErrorLog (counted, with its message) where it
+// happened, and the tasks after it run: it is never rethrown into the poster, whose own work
+// (another observer, the next frame) has nothing to do with it.
+//
+// Locking policy: one mutex guards the queue, the busy flag and the stop flag; tasks run without
+// it, on the worker thread only, so whatever a task touches is the worker thread's alone while
+// tasks run. Post and Wait are for one thread (the poster). The ErrorLog has its own lock.
 
 #include <condition_variable>
 #include <deque>
-#include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
+
+#include "dslam/core/error_log.h"
 
 namespace dslam {
 
@@ -27,39 +34,45 @@ enum class WorkerMode {
 class OrderedWorker {
  public:
   /// Starts the worker thread in WorkerMode::kThreaded. Post blocks while `max_pending` tasks
-  /// wait, so the queue and the memory the tasks capture stay bounded. Throws
+  /// wait, so the queue and the memory the tasks capture stay bounded. A task's exception goes
+  /// to `errors` (a log of its own when null) as an error of `where`. Throws
   /// std::invalid_argument when max_pending < 1.
-  OrderedWorker(WorkerMode mode, int max_pending);
+  OrderedWorker(WorkerMode mode, int max_pending, std::shared_ptr<ErrorLog> errors = nullptr,
+                std::string where = "worker");
 
-  /// Runs the tasks still queued, then stops the thread. A task's error is not rethrown here.
+  /// Runs the tasks still queued, then stops the thread.
   ~OrderedWorker();
 
   OrderedWorker(const OrderedWorker&) = delete;
   OrderedWorker& operator=(const OrderedWorker&) = delete;
 
-  /// Queues `task` (synchronous: runs it now). Blocks while max_pending tasks wait. Rethrows the
-  /// first exception a task threw since the last Post or Wait (that task's successors still ran).
+  /// Queues `task` (synchronous: runs it now). Blocks while max_pending tasks wait. Never
+  /// throws the task's exception (it goes to errors()).
   void Post(std::function<void()> task);
 
-  /// Returns when every posted task has run; rethrows as Post does.
+  /// Returns when every posted task has run.
   void Wait();
+
+  /// Where the tasks' exceptions are reported (shared with whoever was given it).
+  ErrorLog& errors() const { return *errors_; }
 
   /// Tasks posted and not yet finished (threaded; 0 in synchronous mode between calls).
   int Pending() const;
 
  private:
-  void Run();  ///< the worker thread's loop
-  void RethrowLocked(std::unique_lock<std::mutex>& lock);
+  void Run();                                       ///< the worker thread's loop
+  void RunTask(const std::function<void()>& task);  ///< runs it, reporting its exception
 
   const WorkerMode mode_;
   const int max_pending_;
+  const std::shared_ptr<ErrorLog> errors_;
+  const std::string where_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;  ///< queue, busy_ or stop_ changed
   std::deque<std::function<void()>> queue_;
   bool busy_ = false;  ///< a task is running on the worker thread
   bool stop_ = false;
-  std::exception_ptr error_;  ///< first error of a task since the last rethrow
-  std::thread thread_;        ///< started last (members above initialised before it runs)
+  std::thread thread_;  ///< started last (members above initialised before it runs)
 };
 
 }  // namespace dslam

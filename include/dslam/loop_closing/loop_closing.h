@@ -21,6 +21,7 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -28,6 +29,7 @@
 #include "dslam/backend/keyframe_observer.h"
 #include "dslam/backend/slam.h"
 #include "dslam/core/config.h"
+#include "dslam/core/error_log.h"
 #include "dslam/core/ordered_worker.h"
 #include "dslam/loop_closing/loop_correction.h"
 #include "dslam/loop_closing/loop_detector.h"
@@ -55,6 +57,7 @@ struct ClosedLoop {
 /// How much loop closing has done (LoopClosing::work).
 struct LoopWork {
   int loops = 0;         ///< [-] loops closed
+  int dropped = 0;       ///< [-] verified loops not closed (solve failed, or refused by Slam)
   int keyframes = 0;     ///< [-] keyframes processed (and timed)
   double last_ms = 0.0;  ///< [ms] the newest keyframe's time; 0 before the first
 };
@@ -92,6 +95,10 @@ class LoopClosing : public KeyFrameObserver {
   /// The number of loops() and of times_ms(), and the newest time, without copying them (any
   /// thread): what a status message shows at every keyframe of a run of any length.
   LoopWork work() const;
+  /// Errors of loop closing's work (a keyframe's exception, a verified loop dropped), each
+  /// reported once where it happened; any thread.
+  std::shared_ptr<ErrorLog> errors() const { return errors_; }
+  std::string name() const override { return "loop closing"; }
 
  private:
   /// One keyframe of OnKeyFrames, on the worker: into the database (loaded), skipped
@@ -116,10 +123,12 @@ class LoopClosing : public KeyFrameObserver {
   /// kPruneKeyFrames keyframes, so that it stays as bounded as the map (tracking.max_keyframes).
   std::vector<int> in_database_;
   std::vector<LoopEdge> loop_edges_;  ///< every accepted loop, for the next loop's pose graph
-  mutable std::mutex mutex_;          ///< guards loops_ and times_ms_
+  mutable std::mutex mutex_;          ///< guards loops_, times_ms_ and dropped_loops_
   std::vector<ClosedLoop> loops_;
+  int dropped_loops_ = 0;
   std::vector<double> times_ms_;
-  std::atomic<bool> stopping_{false};  ///< OnStop began: queued keyframes are skipped
+  std::atomic<bool> stopping_{false};       ///< OnStop began: queued keyframes are skipped
+  const std::shared_ptr<ErrorLog> errors_;  ///< its own lock; given to worker_
   /// Runs the keyframes' work in order; declared last, so that its thread ends (destroyed first)
   /// before the members its tasks use.
   std::unique_ptr<OrderedWorker> worker_;

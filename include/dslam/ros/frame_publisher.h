@@ -30,6 +30,7 @@ struct FrameCounters {
   uint64_t processed = 0;  ///< frames run through the odometry
   uint64_t dropped = 0;    ///< replaced in the queue before processing
   uint64_t rejected = 0;   ///< bad input (encoding, size, camera)
+  uint64_t errors = 0;     ///< errors of work off the frame's call (back end, observers, loops)
 };
 
 /// Sets the back-end fields of a FrameStatus message from `backend`: each field of

@@ -43,6 +43,9 @@ class ObjectsPublisher {
   void Publish(const RgbdFrame& frame, const FrameResult& result, const std_msgs::Header& header,
                const Eigen::Isometry3d& T_frame_world);
 
+  /// Errors of the tracker's work (its OrderedWorker), each reported once.
+  ErrorLog& errors() const { return worker_.errors(); }
+
  private:
   /// The objects thread's part of Publish.
   void TrackAndPublish(const RgbdFrame& frame, const FrameResult& result,

@@ -101,6 +101,11 @@ class OdometryNodelet : public nodelet::Nodelet {
   void RecordPose(const FrameResult& result, bool new_world);
   void Publish(const Input& input, const RgbdFrame& frame, const FrameResult& result);
   FrameCounters Counters() const;
+  /// Logs each error of the work beside the frames (Slam's back end and observers, loop closing,
+  /// the moving objects) once, with the part where it happened.
+  void LogBackgroundErrors();
+  /// Once a minute, logs the longest hold of Slam's map lock in that minute and its holder.
+  void LogLongestLockHold();
   /// The camera mount T_base_camera: from TF if available at the first frame, else the default.
   const Eigen::Isometry3d& CameraMount(const std::string& camera_frame, const ros::Time& stamp);
   bool OnReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -147,6 +152,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::thread worker_;
   std::atomic<uint64_t> received_{0}, processed_{0}, rejected_{0};
   std::atomic<bool> reset_requested_{false};
+  ros::WallTime last_lock_log_;  // LogLongestLockHold; the worker's alone
 
   std::mutex trajectory_mutex_;
   std::unique_ptr<TrajectoryRecorder> recorder_;  // every tracked pose, guarded

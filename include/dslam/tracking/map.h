@@ -227,13 +227,16 @@ class Map {
   /// made at or before its creation (all of the correction when there is none); counts a
   /// correction. Frozen keyframes and points stay (as in CorrectKeyFrames).
   void MoveMadeSince(const MapCorrection& correction);
-  /// Moves keyframes to corrected poses (a loop correction): each keyframe with an entry in
-  /// `T_world_camera_corrected` (by id) to that pose; keyframes without one and newer (by id)
-  /// than every keyframe with one move with the newest of those (made while the correction was
-  /// computed); each point with the newest moved keyframe made at or before its creation frame
-  /// (position and covariance). Frozen keyframes and points stay where they are (Freeze). Counts
-  /// a correction.
-  void CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected);
+  /// Moves keyframes by a loop correction: each keyframe with an entry in
+  /// `T_world_camera_corrected` (by id) by corrected * before^-1, before being its entry in
+  /// `T_world_camera_before` (the pose the correction was computed from; its present pose when
+  /// absent), so that a change made since (local BA) is kept; keyframes without one and newer
+  /// (by id) than every keyframe with one move with the newest of those (made while the
+  /// correction was computed); each point with the newest moved keyframe made at or before its
+  /// creation frame (position and covariance). Frozen keyframes and points stay where they are
+  /// (Freeze). Counts a correction. Poses [m], camera optical frame -> world.
+  void CorrectKeyFrames(const std::map<int, Eigen::Isometry3d>& T_world_camera_corrected,
+                        const std::map<int, Eigen::Isometry3d>& T_world_camera_before = {});
   /// Corrections made by MoveMadeSince and CorrectKeyFrames since construction (Clear keeps the
   /// count): a copy of the window taken before a correction must not write its poses back after it.
   uint64_t corrections() const { return corrections_; }

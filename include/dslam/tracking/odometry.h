@@ -60,6 +60,11 @@ class Odometry {
   /// into a new world (ResetMode::kNewWorld; FrameResult::reset and message say so). `request`
   /// chooses the per-frame lists filled. Throws std::invalid_argument when frame.Check() fails.
   FrameResult ProcessFrame(const RgbdFrame& frame, const FrameRequest& request = {});
+  /// As above with step 1 done already: `features` are ExtractFeatures(frame, config().features,
+  /// config().depth_noise), taken in `features_ms` [ms] (Slam extracts them without its map
+  /// lock). The results are identical.
+  FrameResult ProcessFrame(const RgbdFrame& frame, FrameFeatures features, double features_ms,
+                           const FrameRequest& request = {});
 
   /// Forgets the map and the velocity; the next frame initialises at the last tracked pose
   /// (kKeepPose) or at the world origin (kNewWorld). Frame indices restart at 0.

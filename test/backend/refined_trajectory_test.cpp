@@ -1,0 +1,62 @@
+// RefinedTrajectory: frames follow their keyframes' refined poses, erased keyframes keep their
+// last pose, and the compact record and block snapshots change the poses by less than the 1e-6 m
+// the trajectory files print.
+#include <gtest/gtest.h>
+
+#include "dslam/backend/refined_trajectory.h"
+
+namespace dslam {
+namespace {
+
+KeyFrame KeyFrameAt(int frame_index, double x) {
+  KeyFrame keyframe;
+  keyframe.frame_index = frame_index;
+  keyframe.T_world_camera.translation() = Eigen::Vector3d(x, 0.0, 0.0);
+  keyframe.measurements.T_camera_world = keyframe.T_world_camera.inverse();
+  return keyframe;
+}
+
+Eigen::Isometry3d PoseNear(double x, double angle) {
+  return Eigen::Translation3d(x, 0.3, -0.2) *
+         Eigen::AngleAxisd(angle, Eigen::Vector3d(1.0, 2.0, 0.5).normalized());
+}
+
+TEST(RefinedTrajectory, FramesFollowTheirKeyFramesAndErasedOnesKeepTheirLastPose) {
+  Map map;
+  RefinedTrajectory refined;
+  Trajectory causal;
+  const int frames = static_cast<int>(2 * RefinedTrajectory::kBlock + 100);  // full blocks too
+  for (int i = 0; i < frames; ++i) {
+    if (i % 50 == 0) map.AddKeyFrame(KeyFrameAt(i, 0.01 * i), KeyFrameMapLimits::Newest(3));
+    causal.push_back({0.1 * i, PoseNear(0.01 * i + 0.003 * (i % 50), 0.001 * i)});
+    refined.AddFrame(causal.back().stamp_s, causal.back().T_world_camera, map);
+  }
+  ASSERT_EQ(refined.size(), static_cast<size_t>(frames));
+  EXPECT_EQ(sizeof(RefinedTrajectory::Frame), 40u);
+  Trajectory poses = refined.Poses();
+  ASSERT_EQ(poses.size(), causal.size());
+  for (size_t i = 0; i < poses.size(); ++i) {  // nothing refined yet: the causal poses
+    EXPECT_DOUBLE_EQ(poses[i].stamp_s, causal[i].stamp_s);
+    EXPECT_LT(
+        (poses[i].T_world_camera.translation() - causal[i].T_world_camera.translation()).norm(),
+        1e-6);
+    EXPECT_TRUE(poses[i].T_world_camera.linear().isApprox(causal[i].T_world_camera.linear(), 1e-6));
+  }
+  // The back end moves the newest keyframe by 5 cm: its frames follow, older ones (their
+  // keyframes erased from the map) stay.
+  KeyFrame& newest = map.FindKeyFrame(map.keyframes().back().id)[0];
+  newest.T_world_camera.translation().y() += 0.05;
+  refined.UpdateKeyFrames(map);
+  const RefinedTrajectory::Snapshot snapshot = refined.Take();
+  poses = snapshot.Poses();
+  const int newest_first_frame = newest.frame_index;
+  for (int i = 0; i < frames; i += 37) {
+    const double dy =
+        poses[i].T_world_camera.translation().y() - causal[i].T_world_camera.translation().y();
+    EXPECT_NEAR(dy, i >= newest_first_frame ? 0.05 : 0.0, 1e-6) << i;
+  }
+  EXPECT_LE(snapshot.live.size(), 2 * map.num_keyframes() + 64);
+}
+
+}  // namespace
+}  // namespace dslam
