@@ -82,7 +82,7 @@ void OdometryNodelet::onInit() {
     for (auto& observer : keyframe_maps_->Observers()) observers.push_back(observer);
     slam_ = std::make_unique<Slam>(
         config, config_.backend_threads ? BackEndMode::kThreaded : BackEndMode::kSynchronous,
-        // For save_refined_trajectory: per tracked frame its pose on its keyframe (144 bytes;
+        // For save_refined_trajectory: per tracked frame its pose on its keyframe (40 bytes;
         // RefinedTrajectory), per keyframe its latest pose.
         RefinedPoseRecording::kOn, observers);
     if (loop_closing_) loop_closing_->Attach(slam_.get());

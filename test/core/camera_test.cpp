@@ -1,6 +1,7 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <opencv2/calib3d.hpp>
 
 #include "dslam/core/camera.h"
 
@@ -101,6 +102,41 @@ TEST(PinholeCamera, InImageHonoursBorder) {
   EXPECT_TRUE(camera.InImage(Eigen::Vector2d(0, 0)));
   EXPECT_FALSE(camera.InImage(Eigen::Vector2d(0, 0), 1.0));
   EXPECT_FALSE(camera.InImage(Eigen::Vector2d(639.5, 10)));
+}
+
+// Distort and Undistort against OpenCV's own model (cv::projectPoints and cv::undistortPoints
+// with the same plumb_bob coefficients): a sign or a swapped coefficient shared by both would
+// pass the round trip above but not this. Coefficients of TUM freiburg1 (strong) and Bonn.
+TEST(PinholeCamera, DistortAndUndistortAgreeWithOpenCv) {
+  const std::vector<Distortion> models = {{0.2624, -0.9531, -0.0054, 0.0026, 1.1633},
+                                          {0.039903, -0.099343, -0.000730, -0.000144, 0.0}};
+  for (const Distortion& d : models) {
+    const PinholeCamera camera(640, 480, 517.3, 516.5, 318.6, 255.3, d);
+    const cv::Matx33d K(517.3, 0.0, 318.6, 0.0, 516.5, 255.3, 0.0, 0.0, 1.0);
+    const std::vector<double> coefficients = {d.k1, d.k2, d.p1, d.p2, d.k3};
+    for (double u = 20; u < 640; u += 61) {
+      for (double v = 20; v < 480; v += 47) {
+        // Ideal pixel -> a point on the ray -> OpenCV's distorted pixel.
+        const Eigen::Vector3d ray = camera.BackProject(Eigen::Vector2d(u, v), 1.0);
+        std::vector<cv::Point2d> projected;
+        cv::projectPoints(std::vector<cv::Point3d>{{ray.x(), ray.y(), ray.z()}}, cv::Vec3d(0, 0, 0),
+                          cv::Vec3d(0, 0, 0), K, coefficients, projected);
+        const Eigen::Vector2d distorted = camera.Distort(Eigen::Vector2d(u, v));
+        EXPECT_NEAR(distorted.x(), projected[0].x, 1e-6) << u << " " << v;
+        EXPECT_NEAR(distorted.y(), projected[0].y, 1e-6) << u << " " << v;
+        // OpenCV's inverse (its own iteration) back to the ideal pixel.
+        std::vector<cv::Point2d> undistorted;
+        cv::undistortPoints(
+            projected, undistorted, K, coefficients, cv::noArray(), K,
+            cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 200, 1e-14));
+        const Eigen::Vector2d ours = camera.Undistort(distorted);
+        EXPECT_NEAR(ours.x(), u, 1e-3);
+        EXPECT_NEAR(ours.y(), v, 1e-3);
+        EXPECT_NEAR(ours.x(), undistorted[0].x, 1e-3) << u << " " << v;
+        EXPECT_NEAR(ours.y(), undistorted[0].y, 1e-3) << u << " " << v;
+      }
+    }
+  }
 }
 
 }  // namespace

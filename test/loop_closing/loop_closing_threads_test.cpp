@@ -30,14 +30,25 @@ class Corrector : public KeyFrameObserver {
         corrected[keyframe.id] = Eigen::Translation3d(0.001, 0.0, 0.0) * keyframe.T_world_camera;
       }
     });
-    corrections_ += slam_->CorrectKeyFrames(corrected);
+    if (!slam_->CorrectKeyFrames(corrected)) return;
+    ++corrections_;
+    // The correction reached the map: every corrected keyframe is where it was sent (this is
+    // the back-end thread, so no local-mapping run applies in between).
+    slam_->ReadMap([&](const Map& map) {
+      for (const auto& [id, T_world_camera] : corrected) {
+        const KeyFrame* keyframe = map.FindKeyFrame(id);
+        missed_ += keyframe != nullptr && !keyframe->T_world_camera.isApprox(T_world_camera, 1e-9);
+      }
+    });
   }
   void OnReset(ResetMode) override {}
   int corrections() const { return corrections_; }
+  int missed() const { return missed_; }  ///< corrected keyframes not at their corrected pose
 
  private:
   Slam* slam_ = nullptr;
   std::atomic<int> corrections_{0};
+  std::atomic<int> missed_{0};
 };
 
 /// The default configuration with the back end on.
@@ -68,6 +79,7 @@ TEST(LoopClosingThreads, DetectionAndCorrectionsRunBesideTracking) {
   closer->Wait();
   EXPECT_EQ(with_pose, 60);
   EXPECT_GE(corrector->corrections(), 1);  // deliveries group the keyframes made meanwhile
+  EXPECT_EQ(corrector->missed(), 0);
   EXPECT_GE(closer->times_ms().size(), 3u);
   EXPECT_TRUE(closer->loops().empty());  // one view of a room: nothing seen twice
   EXPECT_EQ(slam.RefinedPoses().size(), 60u);
