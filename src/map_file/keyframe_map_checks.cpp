@@ -34,11 +34,11 @@ std::string PoseProblem(const Eigen::Isometry3d& T) {
   return "";
 }
 
-// Whether `A` (finite) is symmetric (|A - A^T| <= 1e-9 |A|, Frobenius) and positive definite
+// Whether `A` (finite) is symmetric (|A - A^T| <= 1e-6 |A|, Frobenius) and positive definite
 // (a Cholesky factorisation of its symmetric part exists).
 template <typename Matrix>
 bool SymmetricPositiveDefinite(const Matrix& A) {
-  if (!((A - A.transpose()).norm() <= 1e-9 * A.norm())) return false;
+  if (!((A - A.transpose()).norm() <= 1e-6 * A.norm())) return false;
   const Matrix symmetric = 0.5 * (A + A.transpose());
   return Eigen::LLT<Matrix>(symmetric).info() == Eigen::Success;
 }

@@ -121,7 +121,7 @@ class KeyFrameMapError : public std::runtime_error {
 /// symmetric positive definite, a keyframe information that is neither zero (unknown) nor
 /// symmetric positive definite, a depth_sigma_m not above 0, settings out of their range, a
 /// descriptor that is neither empty nor 1x32 CV_8U, images of a keyframe not in the map or of
-/// another type or size than the camera's. Symmetric: |A - A^T| <= 1e-9 |A| (Frobenius).
+/// another type or size than the camera's. Symmetric: |A - A^T| <= 1e-6 |A| (Frobenius).
 std::string SerialiseKeyFrameMap(const KeyFrameMapFile& file);
 
 /// Streams the file (SerialiseKeyFrameMap's bytes) to a temporary file next to `path` and renames
