@@ -1,8 +1,14 @@
-// Little-endian byte helpers, FNV-1a and write-then-rename (dslam/core/binary_io.h).
+// Little-endian byte helpers, FNV-1a and write-then-rename (dslam/core/binary_io.h and
+// dslam/core/atomic_file.h).
 #include "dslam/core/binary_io.h"
 
+#include "dslam/core/atomic_file.h"
+
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -41,13 +47,16 @@ double GetF64(const std::string& bytes, std::size_t offset) {
   return v;
 }
 
-std::uint64_t Fnv1a64(const char* data, std::size_t size) {
-  std::uint64_t hash = 14695981039346656037ull;
+std::uint64_t Fnv1a64Update(std::uint64_t hash, const char* data, std::size_t size) {
   for (std::size_t i = 0; i < size; ++i) {
     hash ^= static_cast<std::uint8_t>(data[i]);
     hash *= 1099511628211ull;
   }
   return hash;
+}
+
+std::uint64_t Fnv1a64(const char* data, std::size_t size) {
+  return Fnv1a64Update(kFnv1a64Basis, data, size);
 }
 
 std::string FormatIdentity(std::uint64_t identity) {
@@ -56,27 +65,117 @@ std::string FormatIdentity(std::uint64_t identity) {
   return text;
 }
 
-void WriteFileAtomically(const std::string& path, const std::string& bytes,
-                         const std::string& who) {
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error(who + ": cannot write " + temporary);
-    }
+namespace {
+
+std::atomic<unsigned long long> temporary_count{0};
+
+// `path` + ".tmp-<pid>-<n>": unique among the files this process names so, and among processes.
+std::string TemporaryPath(const std::string& path) {
+  return path + ".tmp-" + std::to_string(::getpid()) + "-" +
+         std::to_string(temporary_count.fetch_add(1, std::memory_order_relaxed));
+}
+
+std::string ErrnoText(int error) {
+  return std::error_code(error, std::generic_category()).message();
+}
+
+// fsync of the file (opened for writing) or folder at `path`: 0, or the errno of the failure.
+// On Linux fsync flushes the file's data however it was written (the page cache is per file).
+int SyncPath(const std::string& path, bool folder) {
+  const int fd = ::open(path.c_str(), (folder ? O_RDONLY | O_DIRECTORY : O_WRONLY) | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int error = ::fsync(fd) == 0 ? 0 : errno;
+  ::close(fd);
+  return error;
+}
+
+std::string FolderOf(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
+void RemoveQuietly(const std::string& path) {
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+}
+
+// Writes `temporary` through `write`, closes and fsyncs it; throws "<who>: cannot write ...".
+void WriteTemporary(const std::string& temporary, const std::function<void(std::ostream&)>& write,
+                    const std::string& who) {
+  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error(who + ": cannot write " + temporary);
+  write(out);
+  out.close();
+  if (!out) throw std::runtime_error(who + ": cannot write " + temporary);
+  const int error = SyncPath(temporary, false);
+  if (error != 0) {
+    throw std::runtime_error(who + ": cannot write " + temporary +
+                             ": cannot sync: " + ErrnoText(error));
   }
+}
+
+void Rename(const std::string& from, const std::string& to, const std::string& who) {
   std::error_code error;
-  std::filesystem::rename(temporary, path, error);
+  std::filesystem::rename(from, to, error);
   if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(who + ": cannot rename " + temporary + " to " + path + ": " +
+    throw std::runtime_error(who + ": cannot rename " + from + " to " + to + ": " +
                              error.message());
   }
+}
+
+// The file at `path`, if there is one, as `path` + ".prev": a hard link (a synced copy where
+// links fail) made under a temporary name and renamed over an older ".prev".
+void KeepPrevious(const std::string& path, const std::string& who) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return;
+  const std::string previous = path + ".prev";
+  const std::string staged = TemporaryPath(previous);
+  if (::link(path.c_str(), staged.c_str()) != 0) {
+    std::filesystem::copy_file(path, staged, error);
+    if (!error && SyncPath(staged, false) != 0) error = std::make_error_code(std::errc::io_error);
+    if (error) {
+      RemoveQuietly(staged);
+      throw std::runtime_error(who + ": cannot keep " + path + " as " + previous + ": " +
+                               error.message());
+    }
+  }
+  try {
+    Rename(staged, previous, who);
+  } catch (...) {
+    RemoveQuietly(staged);
+    throw;
+  }
+}
+
+}  // namespace
+
+void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write,
+                         const std::string& who, PreviousFile previous) {
+  const std::string temporary = TemporaryPath(path);
+  try {
+    WriteTemporary(temporary, write, who);
+    if (previous == PreviousFile::kKeep) KeepPrevious(path, who);
+    Rename(temporary, path, who);
+  } catch (...) {
+    RemoveQuietly(temporary);
+    throw;
+  }
+  const std::string folder = FolderOf(path);
+  const int error = SyncPath(folder, true);
+  if (error != 0 && error != EINVAL) {  // EINVAL: a file system that cannot sync folders
+    throw std::runtime_error(who + ": wrote " + path + " but cannot sync its folder " + folder +
+                             ": " + ErrnoText(error));
+  }
+}
+
+void WriteFileAtomically(const std::string& path, const std::string& bytes,
+                         const std::string& who) {
+  WriteFileAtomically(
+      path,
+      [&](std::ostream& out) {
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      },
+      who);
 }
 
 std::string ReadWholeFile(const std::string& path, const std::string& who) {

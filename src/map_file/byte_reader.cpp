@@ -1,4 +1,5 @@
-// The keyframe map file's bounded body reader (keyframe_map_internal.h, ByteReader) and poses.
+// The keyframe map file's bounded stream reader (keyframe_map_internal.h, ByteReader), its
+// hashing writer (HashingWriter) and poses.
 #include <cstring>
 
 #include "dslam/core/binary_io.h"
@@ -15,31 +16,46 @@ void ByteReader::Need(std::size_t n, const char* what) const {
   }
 }
 
-std::uint8_t ByteReader::U8(const char* what) {
-  Need(1, what);
-  return static_cast<std::uint8_t>(bytes_[offset_++]);
+void ByteReader::Read(char* out, std::size_t n) {
+  in_->read(out, static_cast<std::streamsize>(n));
+  if (static_cast<std::size_t>(in_->gcount()) != n) {
+    throw KeyFrameMapError(name_ + ": read error at offset " + std::to_string(offset_) +
+                           " (the file ended early or changed while it was read)");
+  }
+  offset_ += n;
 }
 
-std::uint32_t ByteReader::U32(const char* what) {
-  Need(4, what);
-  const auto v = static_cast<std::uint32_t>(GetLittleEndian(bytes_, offset_, 4));
-  offset_ += 4;
+std::uint64_t ByteReader::LittleEndian(int n, const char* what) {
+  Need(n, what);
+  char bytes[8];
+  Read(bytes, n);
+  std::uint64_t v = 0;
+  for (int i = 0; i < n; ++i)
+    v |= static_cast<std::uint64_t>(static_cast<std::uint8_t>(bytes[i])) << (8 * i);
   return v;
 }
 
+std::uint8_t ByteReader::U8(const char* what) {
+  return static_cast<std::uint8_t>(LittleEndian(1, what));
+}
+
+std::uint32_t ByteReader::U32(const char* what) {
+  return static_cast<std::uint32_t>(LittleEndian(4, what));
+}
+
+std::uint64_t ByteReader::U64(const char* what) { return LittleEndian(8, what); }
+
 std::int64_t ByteReader::I64(const char* what) {
-  Need(8, what);
-  const std::uint64_t bits = GetLittleEndian(bytes_, offset_, 8);
-  offset_ += 8;
+  const std::uint64_t bits = LittleEndian(8, what);
   std::int64_t v = 0;
   std::memcpy(&v, &bits, sizeof(v));  // two's complement, without an out-of-range conversion
   return v;
 }
 
 double ByteReader::F64(const char* what) {
-  Need(8, what);
-  const double v = GetF64(bytes_, offset_);
-  offset_ += 8;
+  const std::uint64_t bits = LittleEndian(8, what);
+  double v = 0.0;
+  std::memcpy(&v, &bits, sizeof(v));
   return v;
 }
 
@@ -50,8 +66,8 @@ void ByteReader::F64s(double* out, int n, const char* what) {
 
 std::string ByteReader::Bytes(std::size_t n, const char* what) {
   Need(n, what);
-  std::string out = bytes_.substr(offset_, n);
-  offset_ += n;
+  std::string out(n, '\0');
+  if (n > 0) Read(&out[0], n);
   return out;
 }
 
@@ -68,6 +84,16 @@ std::uint32_t ByteReader::Count(std::size_t min_record_bytes, const char* what) 
   const std::uint32_t n = U32(what);
   CheckFits(n, min_record_bytes, what);
   return n;
+}
+
+void HashingWriter::Write(std::string* bytes) {
+  if (size_ + bytes->size() > kChecksumFrom) {
+    const std::size_t skipped = size_ >= kChecksumFrom ? 0 : kChecksumFrom - size_;
+    hash_ = Fnv1a64Update(hash_, bytes->data() + skipped, bytes->size() - skipped);
+  }
+  out_->write(bytes->data(), static_cast<std::streamsize>(bytes->size()));
+  size_ += bytes->size();
+  bytes->clear();
 }
 
 Eigen::Isometry3d ReadPose(ByteReader* in, const char* what) {

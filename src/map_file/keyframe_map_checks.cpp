@@ -4,12 +4,24 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/Cholesky>
+
 #include "dslam/core/binary_io.h"
+#include "dslam/core/config.h"
 #include "keyframe_map_internal.h"
 
 namespace dslam {
 namespace map_file {
 namespace {
+
+constexpr char kMaxIndexWhy[] =
+    "1073741823 (kKeyFrameMapMaxIndex: a run continuing the map would overflow an int)";
+
+std::string Number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.9g", v);
+  return text;
+}
 
 // "" when T is finite and its rotation one (|R^T R - I| <= 1e-6, det R > 0), else why not.
 std::string PoseProblem(const Eigen::Isometry3d& T) {
@@ -22,10 +34,22 @@ std::string PoseProblem(const Eigen::Isometry3d& T) {
   return "";
 }
 
+// Whether `A` (finite) is symmetric (|A - A^T| <= 1e-6 |A|, Frobenius) and positive definite
+// (a Cholesky factorisation of its symmetric part exists).
+template <typename Matrix>
+bool SymmetricPositiveDefinite(const Matrix& A) {
+  if (!((A - A.transpose()).norm() <= 1e-6 * A.norm())) return false;
+  const Matrix symmetric = 0.5 * (A + A.transpose());
+  return Eigen::LLT<Matrix>(symmetric).info() == Eigen::Success;
+}
+
 std::string PointProblem(const MapPoint& p) {
   if (!p.p_world.allFinite() || !p.cov_world.allFinite() ||
       !std::isfinite(p.reference_distance_m)) {
     return "a non-finite position, covariance or reference distance";
+  }
+  if (!SymmetricPositiveDefinite(p.cov_world)) {
+    return "a covariance (cov_world) that is not symmetric positive definite";
   }
   const cv::Mat& d = p.descriptor;
   if (!d.empty() && (d.rows != 1 || d.cols != kDescriptorBytes || d.type() != CV_8U)) {
@@ -34,17 +58,51 @@ std::string PointProblem(const MapPoint& p) {
   return "";
 }
 
+std::string MeasurementProblem(const PointMeasurement& m) {
+  if (!m.y_camera.allFinite() || !m.covariance.allFinite() || !std::isfinite(m.depth_mean_m) ||
+      !std::isfinite(m.depth_sigma_m)) {
+    return "is not finite";
+  }
+  if (!SymmetricPositiveDefinite(m.covariance)) {
+    return "has a covariance that is not symmetric positive definite";
+  }
+  if (!(m.depth_sigma_m > 0.0)) return "has depth_sigma_m " + Number(m.depth_sigma_m) + ", not > 0";
+  return "";
+}
+
 std::string KeyFrameProblem(const KeyFrame& k) {
+  if (k.frame_index > kKeyFrameMapMaxIndex) {
+    return "frame_index " + std::to_string(k.frame_index) + ", above " + kMaxIndexWhy;
+  }
   if (!std::isfinite(k.stamp_s)) return "a non-finite stamp";
   if (!k.information.allFinite()) return "a non-finite information matrix";
+  if (!k.information.isZero(0.0) && !SymmetricPositiveDefinite(k.information)) {
+    return "an information matrix that is neither zero (unknown) nor symmetric positive definite";
+  }
   std::string problem = PoseProblem(k.T_world_camera);
   if (problem.empty()) problem = PoseProblem(k.measurements.T_camera_world);
   if (!problem.empty()) return problem;
   for (const auto& entry : k.measurements.by_point) {
-    const PointMeasurement& m = entry.second;
-    if (!m.y_camera.allFinite() || !m.covariance.allFinite() || !std::isfinite(m.depth_mean_m) ||
-        !std::isfinite(m.depth_sigma_m)) {
-      return "a non-finite measurement of point " + std::to_string(entry.first);
+    problem = MeasurementProblem(entry.second);
+    if (!problem.empty())
+      return "a measurement of point " + std::to_string(entry.first) + " that " + problem;
+  }
+  return "";
+}
+
+// "" when `s` is in the ranges of KeyFrameMapSettings, else the first field out of range.
+std::string SettingsProblem(const KeyFrameMapSettings& s) {
+  const DepthNoiseConfig& n = s.depth_noise;
+  if (s.orb_levels < 1) return "features.num_levels " + std::to_string(s.orb_levels) + ", not >= 1";
+  if (!(std::isfinite(s.orb_scale_factor) && s.orb_scale_factor > 1.0)) {
+    return "features.scale_factor " + Number(s.orb_scale_factor) + ", not finite and > 1";
+  }
+  if (!(std::isfinite(n.pixel_sigma_px) && n.pixel_sigma_px > 0.0)) {
+    return "depth_noise.pixel_sigma_px " + Number(n.pixel_sigma_px) + ", not finite and > 0";
+  }
+  for (double v : {n.sigma_d_quadratic, n.sigma_d_constant_m, n.min_depth_m, n.max_depth_m}) {
+    if (!(std::isfinite(v) && v >= 0.0)) {
+      return "a depth_noise value " + Number(v) + ", not finite and >= 0";
     }
   }
   return "";
@@ -100,6 +158,18 @@ std::string CheckContents(const KeyFrameMapFile& file) {
     return "keyframe id " + std::to_string(keyframes[bad_keyframe].id) +
            " is negative or not above the one before (ids ascending, each once)";
   }
+  if (!points.empty() && points.back().id > kKeyFrameMapMaxPointId) {
+    return "map point id " + std::to_string(points.back().id) + " is above " +
+           std::to_string(kKeyFrameMapMaxPointId) +
+           " (kKeyFrameMapMaxPointId: a run continuing the map would overflow a PointId)";
+  }
+  if (!keyframes.empty() && keyframes.back().id > kKeyFrameMapMaxIndex) {
+    return "keyframe id " + std::to_string(keyframes.back().id) + " is above " + kMaxIndexWhy;
+  }
+  if (file.settings) {
+    const std::string problem = SettingsProblem(*file.settings);
+    if (!problem.empty()) return "settings: " + problem;
+  }
   for (const MapPoint& p : points) {
     const std::string problem = PointProblem(p);
     if (!problem.empty()) return "map point " + std::to_string(p.id) + " has " + problem;
@@ -122,8 +192,47 @@ std::string CheckContents(const KeyFrameMapFile& file) {
 
 }  // namespace map_file
 
+namespace map_file {
+namespace {
+
+// "" when `a` (the file's) and `b` (the run's) are equal (numbers Near), else the first
+// difference.
+std::string SettingsDifference(const KeyFrameMapSettings& a, const KeyFrameMapSettings& b) {
+  const auto differs = [](const char* key, double file, double run) {
+    return "recorded with " + std::string(key) + " " + Number(file) + " but this run uses " +
+           Number(run);
+  };
+  if (a.orb_levels != b.orb_levels) {
+    return differs("features.num_levels", a.orb_levels, b.orb_levels);
+  }
+  if (!Near(a.orb_scale_factor, b.orb_scale_factor)) {
+    return differs("features.scale_factor", a.orb_scale_factor, b.orb_scale_factor);
+  }
+  const DepthNoiseConfig& m = a.depth_noise;
+  const DepthNoiseConfig& n = b.depth_noise;
+  const std::pair<const char*, std::pair<double, double>> noise[] = {
+      {"depth_noise.pixel_sigma_px", {m.pixel_sigma_px, n.pixel_sigma_px}},
+      {"depth_noise.sigma_d_quadratic", {m.sigma_d_quadratic, n.sigma_d_quadratic}},
+      {"depth_noise.sigma_d_constant_m", {m.sigma_d_constant_m, n.sigma_d_constant_m}},
+      {"depth_noise.min_depth_m", {m.min_depth_m, n.min_depth_m}},
+      {"depth_noise.max_depth_m", {m.max_depth_m, n.max_depth_m}}};
+  for (const auto& [key, values] : noise) {
+    if (!Near(values.first, values.second)) return differs(key, values.first, values.second);
+  }
+  return "";
+}
+
+}  // namespace
+}  // namespace map_file
+
+KeyFrameMapSettings KeyFrameMapSettingsOf(const Config& config) {
+  return KeyFrameMapSettings{config.features.num_levels, config.features.scale_factor,
+                             config.depth_noise};
+}
+
 std::string CheckCompatible(const KeyFrameMapFile& file, const PinholeCamera& camera,
-                            std::uint64_t vocabulary_identity) {
+                            std::uint64_t vocabulary_identity,
+                            const KeyFrameMapSettings& settings) {
   const PinholeCamera& c = file.camera;
   const Distortion& d = c.distortion();
   const Distortion& e = camera.distortion();
@@ -141,7 +250,13 @@ std::string CheckCompatible(const KeyFrameMapFile& file, const PinholeCamera& ca
     return "recorded with vocabulary " + FormatIdentity(file.vocabulary_identity) +
            " but this run uses " + FormatIdentity(vocabulary_identity);
   }
-  return "";
+  return file.settings ? map_file::SettingsDifference(*file.settings, settings) : "";
+}
+
+std::string KeyFrameMapWarning(const KeyFrameMapFile& file) {
+  if (file.settings) return "";
+  return "format version 1: the ORB and depth noise settings the map was made with are not in "
+         "the file and cannot be checked against this run's";
 }
 
 }  // namespace dslam

@@ -5,10 +5,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <istream>
+#include <ostream>
+#include <streambuf>
 #include <string>
 
 #include <Eigen/Geometry>
 
+#include "dslam/core/atomic_file.h"
 #include "dslam/map_file/keyframe_map_file.h"
 
 namespace dslam {
@@ -23,17 +27,21 @@ constexpr std::size_t kMinPointBytes = 8 + 24 + 72 + 1 + 4 + 4 + 8 + 1 + 7 * 4;
 constexpr std::size_t kMinKeyFrameBytes = 4 + 4 + 8 + 96 + 288 + 1 + 4 + 96 + 4;
 constexpr std::size_t kMeasurementBytes = 8 + 24 + 72 + 8 + 8;
 constexpr std::size_t kMinImagePairBytes = 4 + 4 + 4;
+constexpr std::size_t kSettingsBytes = 4 + 6 * 8;  ///< the version 2 header's settings
 
-/// Reads the body from an offset on; every read past the end, and every count whose records
-/// cannot fit in the bytes left, throws KeyFrameMapError "<name>: truncated body: ...".
+/// Reads the records of a file of `size` bytes from a stream at `offset` on; every read past the
+/// end, and every count whose records cannot fit in the bytes left, throws KeyFrameMapError
+/// "<name>: truncated body: ..."; a stream that ends before `size` (a file cut while it is
+/// read) throws "<name>: read error at offset N".
 class ByteReader {
  public:
-  ByteReader(const std::string& bytes, std::size_t offset, const std::string& name)
-      : bytes_(bytes), offset_(offset), name_(name) {}
+  ByteReader(std::istream* in, std::uint64_t offset, std::uint64_t size, const std::string& name)
+      : in_(in), offset_(offset), size_(size), name_(name) {}
 
   std::uint8_t U8(const char* what);
   std::uint32_t U32(const char* what);
   std::int32_t I32(const char* what) { return static_cast<std::int32_t>(U32(what)); }
+  std::uint64_t U64(const char* what);
   std::int64_t I64(const char* what);
   double F64(const char* what);
   /// `n` doubles into `out`.
@@ -44,17 +52,64 @@ class ByteReader {
   std::uint32_t Count(std::size_t min_record_bytes, const char* what);
   /// Checks that `n` records of at least `min_record_bytes` can fit in the bytes left.
   void CheckFits(std::uint64_t n, std::size_t min_record_bytes, const char* what) const;
-  std::size_t offset() const { return offset_; }
-  std::size_t left() const { return bytes_.size() - offset_; }
+  std::uint64_t offset() const { return offset_; }
+  std::uint64_t left() const { return size_ - offset_; }
 
  private:
   /// Throws unless `n` bytes are left.
   void Need(std::size_t n, const char* what) const;
+  /// Reads `n` bytes (Need checked) into `out`.
+  void Read(char* out, std::size_t n);
+  /// The `n` (<= 8) bytes from here as a little-endian unsigned integer.
+  std::uint64_t LittleEndian(int n, const char* what);
 
-  const std::string& bytes_;
-  std::size_t offset_;
+  std::istream* in_;
+  std::uint64_t offset_;
+  std::uint64_t size_;
   const std::string& name_;
 };
+
+/// A read-only std::streambuf over a string's bytes (no copy; `bytes` must outlive it).
+class StringViewBuf : public std::streambuf {
+ public:
+  explicit StringViewBuf(const std::string& bytes) {
+    char* begin = const_cast<char*>(bytes.data());
+    setg(begin, begin, begin + bytes.size());
+  }
+};
+
+/// Writes a file's bytes to a stream, hashing those from kChecksumFrom on as they pass (the
+/// checksum of keyframe_map_file.h).
+class HashingWriter {
+ public:
+  explicit HashingWriter(std::ostream* out) : out_(out) {}
+  /// Writes `bytes` and clears it.
+  void Write(std::string* bytes);
+  std::uint64_t size() const { return size_; }      ///< [bytes] written so far
+  std::uint64_t checksum() const { return hash_; }  ///< of the bytes from kChecksumFrom on
+  bool ok() const { return static_cast<bool>(*out_); }
+
+ private:
+  std::ostream* out_;
+  std::uint64_t size_ = 0;
+  std::uint64_t hash_ = kFnv1a64Basis;
+};
+
+/// Writes the file of `file` (checked by the caller with CheckContents) to `out`, which must be
+/// seekable: the size and checksum fields are written last.
+void WriteKeyFrameMap(const KeyFrameMapFile& file, std::ostream* out);
+
+/// The format version of a file of `size` bytes whose first bytes are `head` (the first
+/// min(size, kKeyFrameMapHeaderBytes)): throws KeyFrameMapError for an empty file, another magic,
+/// another version, a size shorter than the header or other than the header's size field.
+std::uint32_t CheckHeader(const std::string& head, std::uint64_t size, const std::string& name);
+/// Throws KeyFrameMapError "<name>: checksum mismatch: the file is corrupt" unless `checksum` is
+/// the header's (`head` as for CheckHeader).
+void CheckChecksum(const std::string& head, std::uint64_t checksum, const std::string& name);
+/// The records of a file of format `version` and `size` bytes from `in`, positioned at
+/// kChecksumFrom (header checked, checksum checked), checked with CheckContents.
+KeyFrameMapFile ReadKeyFrameMap(std::istream* in, std::uint64_t size, std::uint32_t version,
+                                const std::string& name);
 
 /// Appends the 3x4 [R | t] of `T` (12 doubles, row-major).
 void PutPose(const Eigen::Isometry3d& T, std::string* out);

@@ -1,9 +1,14 @@
 // The keyframe map file's reader: ParseKeyFrameMap and LoadKeyFrameMap (format in
 // dslam/map_file/keyframe_map_file.h). The header is checked first (magic, version, size,
-// checksum), then the body is read with every count bounded by the bytes left, then the
-// contents are checked against the rules the writer keeps (CheckContents).
+// checksum: a file is streamed once for it), then the body is read as a stream with every count
+// bounded by the bytes left, then the contents are checked against the rules the writer keeps
+// (CheckContents).
+#include <algorithm>
 #include <cstring>
+#include <fstream>
+#include <istream>
 #include <optional>
+#include <vector>
 
 #include "dslam/core/binary_io.h"
 #include "keyframe_map_internal.h"
@@ -16,37 +21,45 @@ namespace {
   throw KeyFrameMapError(name + ": " + why);
 }
 
-// Magic, version, file size and checksum of `bytes`; throws when one does not hold.
-void CheckHeader(const std::string& bytes, const std::string& name) {
-  if (bytes.empty()) Fail(name, "empty file, not a dslam keyframe map");
-  const std::size_t compared = std::min(bytes.size(), sizeof(kMagic));
-  if (std::memcmp(bytes.data(), kMagic, compared) != 0) {
+std::uint64_t HeaderField(const std::string& head, std::size_t offset, int size) {
+  return GetLittleEndian(head, offset, size);
+}
+
+}  // namespace
+
+std::uint32_t CheckHeader(const std::string& head, std::uint64_t size, const std::string& name) {
+  if (size == 0) Fail(name, "empty file, not a dslam keyframe map");
+  const std::size_t compared = std::min(head.size(), sizeof(kMagic));
+  if (std::memcmp(head.data(), kMagic, compared) != 0) {
     Fail(name, "not a dslam keyframe map (its first bytes are not the magic \"DSLAMKFM\")");
   }
-  const std::string got = ", got " + std::to_string(bytes.size());
-  if (bytes.size() < 12) Fail(name, "truncated: expected at least 12 bytes" + got);
-  const std::uint64_t version = GetLittleEndian(bytes, 8, 4);
-  if (version != kKeyFrameMapVersion) {
-    Fail(name, "unsupported format version " + std::to_string(version) + " (this build reads " +
-                   std::to_string(kKeyFrameMapVersion) + ")");
+  const std::string got = ", got " + std::to_string(size);
+  if (size < 12) Fail(name, "truncated: expected at least 12 bytes" + got);
+  const std::uint64_t version = HeaderField(head, 8, 4);
+  if (version != 1 && version != kKeyFrameMapVersion) {
+    Fail(name, "unsupported format version " + std::to_string(version) +
+                   " (this build reads 1 and " + std::to_string(kKeyFrameMapVersion) + ")");
   }
-  if (bytes.size() < kKeyFrameMapHeaderBytes) {
-    Fail(name, "truncated: expected at least " + std::to_string(kKeyFrameMapHeaderBytes) +
-                   " bytes (the header)" + got);
+  const std::size_t header = version == 1 ? kKeyFrameMapV1HeaderBytes : kKeyFrameMapHeaderBytes;
+  if (size < header) {
+    Fail(name,
+         "truncated: expected at least " + std::to_string(header) + " bytes (the header)" + got);
   }
-  const std::uint64_t size = GetLittleEndian(bytes, 12, 8);
-  if (bytes.size() < size) {
-    Fail(name, "truncated: expected " + std::to_string(size) + " bytes" + got);
+  const std::uint64_t expected = HeaderField(head, 12, 8);
+  if (size < expected)
+    Fail(name, "truncated: expected " + std::to_string(expected) + " bytes" + got);
+  if (size > expected) {
+    Fail(name, "corrupt: " + std::to_string(size) + " bytes, the header gives " +
+                   std::to_string(expected));
   }
-  if (bytes.size() > size) {
-    Fail(name, "corrupt: " + std::to_string(bytes.size()) + " bytes, the header gives " +
-                   std::to_string(size));
-  }
-  const std::uint64_t checksum = GetLittleEndian(bytes, 20, 8);
-  if (Fnv1a64(bytes.data() + kChecksumFrom, bytes.size() - kChecksumFrom) != checksum) {
-    Fail(name, "checksum mismatch: the file is corrupt");
-  }
+  return static_cast<std::uint32_t>(version);
 }
+
+void CheckChecksum(const std::string& head, std::uint64_t checksum, const std::string& name) {
+  if (HeaderField(head, 20, 8) != checksum) Fail(name, "checksum mismatch: the file is corrupt");
+}
+
+namespace {
 
 PinholeCamera ReadCamera(ByteReader* in, const std::string& name) {
   const std::uint32_t width = in->U32("camera");
@@ -155,47 +168,104 @@ void ReadImages(ByteReader* in, std::uint32_t n, KeyFrameMapFile* file, const st
   }
 }
 
+KeyFrameMapSettings ReadSettings(ByteReader* in) {
+  KeyFrameMapSettings settings;
+  settings.orb_levels = in->I32("the settings");
+  double v[6];
+  in->F64s(v, 6, "the settings");
+  settings.orb_scale_factor = v[0];
+  settings.depth_noise = DepthNoiseConfig{v[1], v[2], v[3], v[4], v[5]};
+  return settings;
+}
+
+// The header's fields from the camera on (the reader at kChecksumFrom); the counts of points,
+// keyframes and image pairs into `counts`.
+KeyFrameMapFile ReadHeaderFields(ByteReader* in, std::uint32_t version, std::uint32_t counts[3],
+                                 const std::string& name) {
+  KeyFrameMapFile file{ReadCamera(in, name), 0, {}, {}, std::nullopt};
+  file.vocabulary_identity = in->U64("the vocabulary identity");
+  for (int i = 0; i < 3; ++i) counts[i] = in->U32("the header");
+  if (version >= 2) file.settings = ReadSettings(in);
+  return file;
+}
+
+}  // namespace
+
+KeyFrameMapFile ReadKeyFrameMap(std::istream* stream, std::uint64_t size, std::uint32_t version,
+                                const std::string& name) {
+  ByteReader in(stream, kChecksumFrom, size, name);
+  std::uint32_t counts[3];
+  KeyFrameMapFile file = ReadHeaderFields(&in, version, counts, name);
+  in.CheckFits(counts[0], kMinPointBytes, "map points");
+  file.contents.points.reserve(counts[0]);
+  for (std::uint32_t i = 0; i < counts[0]; ++i)
+    file.contents.points.push_back(ReadPoint(&in, name));
+  in.CheckFits(counts[1], kMinKeyFrameBytes, "keyframes");
+  file.contents.keyframes.reserve(counts[1]);
+  for (std::uint32_t i = 0; i < counts[1]; ++i) {
+    file.contents.keyframes.push_back(ReadKeyFrame(&in, name));
+  }
+  in.CheckFits(counts[2], kMinImagePairBytes, "image pairs");
+  ReadImages(&in, counts[2], &file, name);
+  if (in.left() != 0) {
+    Fail(name, "invalid content: " + std::to_string(in.left()) + " bytes after the last record");
+  }
+  const std::string problem = CheckContents(file);
+  if (!problem.empty()) Fail(name, "invalid content: " + problem);
+  return file;
+}
+
+namespace {
+
+// The FNV-1a hash of `in`'s bytes from kChecksumFrom to `size`, read in pieces.
+std::uint64_t StreamChecksum(std::istream* in, std::uint64_t size, const std::string& name) {
+  std::vector<char> buffer(1 << 16);
+  std::uint64_t hash = kFnv1a64Basis;
+  in->seekg(static_cast<std::streamoff>(kChecksumFrom));
+  for (std::uint64_t left = size - kChecksumFrom; left > 0;) {
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(left, buffer.size()));
+    in->read(buffer.data(), static_cast<std::streamsize>(n));
+    if (static_cast<std::size_t>(in->gcount()) != n) {
+      Fail(name, "read error (the file ended early or changed while it was read)");
+    }
+    hash = Fnv1a64Update(hash, buffer.data(), n);
+    left -= n;
+  }
+  return hash;
+}
+
 }  // namespace
 }  // namespace map_file
 
 KeyFrameMapFile ParseKeyFrameMap(const std::string& bytes, const std::string& name) {
-  map_file::CheckHeader(bytes, name);
-  map_file::ByteReader in(bytes, map_file::kChecksumFrom, name);
-  KeyFrameMapFile file{map_file::ReadCamera(&in, name), 0, {}, {}};
-  file.vocabulary_identity = GetLittleEndian(bytes, in.offset(), 8);
-  in.Bytes(8, "the vocabulary identity");
-  const std::uint32_t points = in.U32("the header");
-  const std::uint32_t keyframes = in.U32("the header");
-  const std::uint32_t images = in.U32("the header");
-  in.CheckFits(points, map_file::kMinPointBytes, "map points");
-  file.contents.points.reserve(points);
-  for (std::uint32_t i = 0; i < points; ++i) {
-    file.contents.points.push_back(map_file::ReadPoint(&in, name));
-  }
-  in.CheckFits(keyframes, map_file::kMinKeyFrameBytes, "keyframes");
-  file.contents.keyframes.reserve(keyframes);
-  for (std::uint32_t i = 0; i < keyframes; ++i) {
-    file.contents.keyframes.push_back(map_file::ReadKeyFrame(&in, name));
-  }
-  in.CheckFits(images, map_file::kMinImagePairBytes, "image pairs");
-  map_file::ReadImages(&in, images, &file, name);
-  if (in.left() != 0) {
-    throw KeyFrameMapError(name + ": invalid content: " + std::to_string(in.left()) +
-                           " bytes after the last record");
-  }
-  const std::string problem = map_file::CheckContents(file);
-  if (!problem.empty()) throw KeyFrameMapError(name + ": invalid content: " + problem);
-  return file;
+  const std::uint32_t version = map_file::CheckHeader(bytes, bytes.size(), name);
+  map_file::CheckChecksum(
+      bytes,
+      Fnv1a64(bytes.data() + map_file::kChecksumFrom, bytes.size() - map_file::kChecksumFrom),
+      name);
+  map_file::StringViewBuf buffer(bytes);
+  std::istream in(&buffer);
+  in.ignore(static_cast<std::streamsize>(map_file::kChecksumFrom));
+  return map_file::ReadKeyFrameMap(&in, bytes.size(), version, name);
 }
 
 KeyFrameMapFile LoadKeyFrameMap(const std::string& path) {
-  std::string bytes;
-  try {
-    bytes = ReadWholeFile(path, "LoadKeyFrameMap");
-  } catch (const std::runtime_error& e) {
-    throw KeyFrameMapError(e.what());
-  }
-  return ParseKeyFrameMap(bytes, path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) map_file::Fail(path, "cannot open the file");
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  if (end < 0) map_file::Fail(path, "cannot read the file");
+  const auto size = static_cast<std::uint64_t>(end);
+  in.seekg(0);
+  std::string head(static_cast<std::size_t>(std::min<std::uint64_t>(size, kKeyFrameMapHeaderBytes)),
+                   '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  if (static_cast<std::size_t>(in.gcount()) != head.size()) map_file::Fail(path, "read error");
+  const std::uint32_t version = map_file::CheckHeader(head, size, path);
+  map_file::CheckChecksum(head, map_file::StreamChecksum(&in, size, path), path);
+  in.clear();
+  in.seekg(static_cast<std::streamoff>(map_file::kChecksumFrom));
+  return map_file::ReadKeyFrameMap(&in, size, version, path);
 }
 
 }  // namespace dslam

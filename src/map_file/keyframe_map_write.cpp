@@ -1,6 +1,8 @@
 // The keyframe map file's writer: SerialiseKeyFrameMap and SaveKeyFrameMap (format in
-// dslam/map_file/keyframe_map_file.h).
+// dslam/map_file/keyframe_map_file.h), streamed record by record, the checksum computed as the
+// bytes pass and written with the size into the header at the end.
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -23,7 +25,7 @@ void PutMatrix(const Matrix& m, std::string* out) {
 
 void PutHeader(const KeyFrameMapFile& file, std::string* out) {
   out->append(kMagic, sizeof(kMagic));
-  PutU32(kKeyFrameMapVersion, out);
+  PutU32(file.settings ? kKeyFrameMapVersion : 1, out);
   PutU64(0, out);  // file size and checksum: filled in when the body is complete
   PutU64(0, out);
   const PinholeCamera& camera = file.camera;
@@ -38,6 +40,14 @@ void PutHeader(const KeyFrameMapFile& file, std::string* out) {
   PutU32(static_cast<std::uint32_t>(file.contents.points.size()), out);
   PutU32(static_cast<std::uint32_t>(file.contents.keyframes.size()), out);
   PutU32(static_cast<std::uint32_t>(file.images.size()), out);
+  if (!file.settings) return;  // version 1
+  const KeyFrameMapSettings& settings = *file.settings;
+  PutI32(settings.orb_levels, out);
+  const DepthNoiseConfig& noise = settings.depth_noise;
+  for (double v : {settings.orb_scale_factor, noise.pixel_sigma_px, noise.sigma_d_quadratic,
+                   noise.sigma_d_constant_m, noise.min_depth_m, noise.max_depth_m}) {
+    PutF64(v, out);
+  }
 }
 
 void PutPoint(const MapPoint& p, std::string* out) {
@@ -97,32 +107,50 @@ void PutPose(const Eigen::Isometry3d& T, std::string* out) {
   PutMatrix(T.matrix().topRows<3>(), out);
 }
 
+void WriteKeyFrameMap(const KeyFrameMapFile& file, std::ostream* out) {
+  constexpr std::size_t kBatchBytes = 1 << 16;  // records gathered per write
+  HashingWriter writer(out);
+  std::string record;
+  PutHeader(file, &record);
+  for (const MapPoint& point : file.contents.points) {
+    PutPoint(point, &record);
+    if (record.size() >= kBatchBytes) writer.Write(&record);
+  }
+  for (const KeyFrame& keyframe : file.contents.keyframes) {
+    PutKeyFrame(keyframe, &record);
+    if (record.size() >= kBatchBytes) writer.Write(&record);
+  }
+  for (const auto& entry : file.images) {
+    if (!writer.ok()) return;  // the stream failed (e.g. a full disk): the caller sees it
+    PutI32(entry.first, &record);
+    PutBytes(EncodeColour(entry.second.colour), &record);
+    PutBytes(EncodeDepth(entry.second.depth_m), &record);
+    writer.Write(&record);
+  }
+  writer.Write(&record);
+  PutU64(writer.size(), &record);
+  PutU64(writer.checksum(), &record);
+  out->seekp(12);
+  out->write(record.data(), static_cast<std::streamsize>(record.size()));
+  out->seekp(0, std::ios::end);
+}
+
 }  // namespace map_file
 
 std::string SerialiseKeyFrameMap(const KeyFrameMapFile& file) {
   const std::string problem = map_file::CheckContents(file);
   if (!problem.empty()) throw std::invalid_argument("SerialiseKeyFrameMap: " + problem);
-  std::string out;
-  map_file::PutHeader(file, &out);
-  for (const MapPoint& point : file.contents.points) map_file::PutPoint(point, &out);
-  for (const KeyFrame& keyframe : file.contents.keyframes) map_file::PutKeyFrame(keyframe, &out);
-  for (const auto& entry : file.images) {
-    map_file::PutI32(entry.first, &out);
-    map_file::PutBytes(map_file::EncodeColour(entry.second.colour), &out);
-    map_file::PutBytes(map_file::EncodeDepth(entry.second.depth_m), &out);
-  }
-  std::string size;
-  PutU64(out.size(), &size);
-  out.replace(12, 8, size);
-  std::string checksum;
-  PutU64(Fnv1a64(out.data() + map_file::kChecksumFrom, out.size() - map_file::kChecksumFrom),
-         &checksum);
-  out.replace(20, 8, checksum);
-  return out;
+  std::ostringstream out(std::ios::binary);
+  map_file::WriteKeyFrameMap(file, &out);
+  return std::move(out).str();
 }
 
-void SaveKeyFrameMap(const std::string& path, const KeyFrameMapFile& file) {
-  WriteFileAtomically(path, SerialiseKeyFrameMap(file), "SaveKeyFrameMap");
+void SaveKeyFrameMap(const std::string& path, const KeyFrameMapFile& file, PreviousFile previous) {
+  const std::string problem = map_file::CheckContents(file);
+  if (!problem.empty()) throw std::invalid_argument("SaveKeyFrameMap: " + problem);
+  WriteFileAtomically(
+      path, [&](std::ostream& out) { map_file::WriteKeyFrameMap(file, &out); }, "SaveKeyFrameMap",
+      previous);
 }
 
 }  // namespace dslam

@@ -37,7 +37,7 @@ std::map<int, KeyFrameImages> KeyFrameImageKeeper::ImagesOf(const MapContents& c
 KeyFrameMapFile KeyFrameMapOf(const Slam& slam, const PinholeCamera& camera,
                               std::uint64_t vocabulary_identity,
                               const KeyFrameImageKeeper* keeper) {
-  KeyFrameMapFile file{camera, vocabulary_identity, {}, {}};
+  KeyFrameMapFile file{camera, vocabulary_identity, {}, {}, KeyFrameMapSettingsOf(slam.config())};
   slam.ReadMap([&](const Map& map) { file.contents = map.Contents(); });
   if (keeper != nullptr) file.images = keeper->ImagesOf(file.contents);
   return file;
@@ -77,7 +77,8 @@ std::vector<KeyFrameRecord> LoadedKeyFrameRecords(const KeyFrameMapFile& file,
 std::string StartInKeyFrameMap(KeyFrameMapFile file, std::shared_ptr<const PinholeCamera> camera,
                                std::shared_ptr<const Vocabulary> vocabulary,
                                double localise_timeout_s, Slam* slam, LoadedMapUse use) {
-  const std::string why = CheckCompatible(file, *camera, vocabulary->identity());
+  const std::string why =
+      CheckCompatible(file, *camera, vocabulary->identity(), KeyFrameMapSettingsOf(slam->config()));
   if (!why.empty()) return why;
   std::vector<KeyFrameRecord> records = LoadedKeyFrameRecords(file, camera);
   slam->StartInMap(Map::FromContents(std::move(file.contents)),

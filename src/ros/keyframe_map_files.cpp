@@ -18,6 +18,10 @@ KeyFrameMapFiles::KeyFrameMapFiles(ros::NodeHandle& nh, const NodeConfig& config
     try {
       loaded_ = std::make_shared<const KeyFrameMapFile>(LoadKeyFrameMap(config_.keyframe_map));
       start_due_ = true;
+      const std::string warning = KeyFrameMapWarning(*loaded_);
+      if (!warning.empty()) {
+        ROS_WARN("dslam: keyframe map %s: %s", config_.keyframe_map.c_str(), warning.c_str());
+      }
       ROS_INFO("dslam: keyframe map %s: %zu keyframes, %zu points; localising in it%s",
                config_.keyframe_map.c_str(), loaded_->contents.keyframes.size(),
                loaded_->contents.points.size(),
@@ -76,7 +80,10 @@ void KeyFrameMapFiles::SaveOnExit() {
   if (config_.save_keyframe_map_on_exit.empty()) return;
   try {
     int keyframes = 0, points = 0;
-    ROS_INFO("dslam: %s", Save(config_.save_keyframe_map_on_exit, &keyframes, &points).c_str());
+    // Over an existing file, that file is kept as PATH.prev.
+    ROS_INFO(
+        "dslam: %s",
+        Save(config_.save_keyframe_map_on_exit, &keyframes, &points, PreviousFile::kKeep).c_str());
   } catch (const std::exception& e) {
     ROS_ERROR("dslam: keyframe map not saved on exit: %s", e.what());
   }
@@ -94,7 +101,8 @@ bool KeyFrameMapFiles::OnSave(dslam::SaveKeyFrameMap::Request& req,
   return true;
 }
 
-std::string KeyFrameMapFiles::Save(const std::string& path, int* keyframes, int* points) {
+std::string KeyFrameMapFiles::Save(const std::string& path, int* keyframes, int* points,
+                                   PreviousFile previous) {
   std::shared_ptr<const PinholeCamera> camera;
   std::shared_ptr<const KeyFrameMapFile> loaded;
   {
@@ -108,7 +116,7 @@ std::string KeyFrameMapFiles::Save(const std::string& path, int* keyframes, int*
   // The map lock only while the map is copied; images and the file after it.
   const KeyFrameMapFile file =
       unchanged ? *loaded : KeyFrameMapOf(*slam_, *camera, vocabulary_->identity(), keeper_.get());
-  SaveKeyFrameMap(path, file);
+  SaveKeyFrameMap(path, file, previous);
   *keyframes = static_cast<int>(file.contents.keyframes.size());
   *points = static_cast<int>(file.contents.points.size());
   return std::string(unchanged ? "localisation only: the loaded map unchanged: " : "") + "wrote " +

@@ -28,6 +28,11 @@ void KeyFrameMapOutput::Load(const std::string& path, std::shared_ptr<const Pinh
   const bool only = use == LoadedMapUse::kLocalisationOnly;
   try {
     KeyFrameMapFile file = LoadKeyFrameMap(path);
+    const std::string warning = KeyFrameMapWarning(file);
+    if (!warning.empty()) {
+      std::fprintf(stderr, "dslam_run_dataset: keyframe map %s: %s\n", path.c_str(),
+                   warning.c_str());
+    }
     loaded_keyframes_ = file.contents.keyframes.size();
     loaded_points_ = file.contents.points.size();
     if (only && !save_path_.empty()) {  // saved as loaded: a copy, images included

@@ -2,6 +2,7 @@
 // lists and back (a saved keyframe map), the window a tracker starting in a loaded map begins
 // with, and a loaded map frozen for localisation only.
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <unordered_set>
@@ -25,6 +26,10 @@ Map Map::FromContents(MapContents contents) {
   for (MapPoint& point : contents.points) {
     if (point.id < 0)
       throw std::invalid_argument("map point with negative id " + std::to_string(point.id));
+    if (point.id == std::numeric_limits<PointId>::max()) {
+      throw std::invalid_argument("map point id " + std::to_string(point.id) +
+                                  " is the largest PointId: the next point's id would overflow");
+    }
     point.observing_keyframes = 0;
     map.next_point_id_ = std::max(map.next_point_id_, point.id + 1);
     const PointId id = point.id;
@@ -35,6 +40,10 @@ Map Map::FromContents(MapContents contents) {
   for (KeyFrame& keyframe : contents.keyframes) {
     if (keyframe.id < 0)
       throw std::invalid_argument("keyframe with negative id " + std::to_string(keyframe.id));
+    if (keyframe.id == std::numeric_limits<int>::max()) {
+      throw std::invalid_argument("keyframe id " + std::to_string(keyframe.id) +
+                                  " is the largest int: the next keyframe's id would overflow");
+    }
     auto& ids = keyframe.points;
     ids.erase(
         std::remove_if(ids.begin(), ids.end(), [&](PointId id) { return map.Find(id) == nullptr; }),

@@ -1,7 +1,9 @@
 // Odometry::StartInMap and the frames before the loaded map localises one: a tracker that starts
 // in a saved keyframe map has no pose until a frame is relocalised in it, at a place that place
 // recognition (PlaceLookup) names.
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "dslam/tracking/keyframe_window.h"
 #include "dslam/tracking/odometry.h"
@@ -22,11 +24,16 @@ void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double t
   if (!config_.tracking.relocalisation) {
     throw std::invalid_argument("Odometry::StartInMap: needs tracking.relocalisation");
   }
-  Reset(ResetMode::kNewWorld);
   int newest_frame = -1;
   for (const KeyFrame* keyframe : map.AllKeyFrames()) {
     newest_frame = std::max(newest_frame, keyframe->frame_index);
   }
+  if (newest_frame == std::numeric_limits<int>::max()) {
+    throw std::invalid_argument("Odometry::StartInMap: keyframe frame_index " +
+                                std::to_string(newest_frame) +
+                                " is the largest int: the next frame's index would overflow");
+  }
+  Reset(ResetMode::kNewWorld);
   map_ = std::move(map);
   localisation_only_ = use == LoadedMapUse::kLocalisationOnly;
   if (localisation_only_) map_.Freeze();

@@ -18,17 +18,20 @@ struct Seed {
   const char* name;
   int points, keyframes;
   bool images;
+  bool version_1 = false;  ///< without settings: format version 1
 };
 constexpr Seed kSeeds[] = {{"empty_map", 0, 0, false},
                            {"points_only", 3, 0, false},
                            {"two_keyframes", 3, 2, false},
-                           {"images", 2, 1, true}};
+                           {"images", 2, 1, true},
+                           {"version_1", 3, 2, false, true}};
 
 TEST(FuzzReplay, KeyFrameMapSeedsAreTheSampleMaps) {
   const std::string folder = std::string(DSLAM_SOURCE_DIR) + "/test/fuzz/corpus/keyframe_map/";
   const bool write = std::getenv("DSLAM_WRITE_FUZZ_SEEDS") != nullptr;
   for (const Seed& seed : kSeeds) {
-    const KeyFrameMapFile sample = test::SampleMapFile(seed.points, seed.keyframes, seed.images);
+    KeyFrameMapFile sample = test::SampleMapFile(seed.points, seed.keyframes, seed.images);
+    if (seed.version_1) sample.settings.reset();
     if (write) WriteFileAtomically(folder + seed.name, SerialiseKeyFrameMap(sample), "test");
     const KeyFrameMapFile stored = LoadKeyFrameMap(folder + seed.name);
     test::ExpectSameMap(stored, sample);

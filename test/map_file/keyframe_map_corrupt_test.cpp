@@ -15,7 +15,7 @@ namespace {
 using fuzz::Resealed;
 
 // Offsets in a file of SampleMapFile (format in keyframe_map_file.h).
-constexpr size_t kPointsCount = 116, kImagesCount = 124, kFirstPoint = 128;
+constexpr size_t kPointsCount = 116, kImagesCount = 124, kSettings = 128, kFirstPoint = 180;
 constexpr size_t kPointWithDescriptor = 150 + 32;
 constexpr size_t kFlags = kFirstPoint + 8 + 24 + 72 + 1 + 32 + 4 + 4 + 8;  // of point 0
 constexpr size_t kDescriptorLength = kFirstPoint + 8 + 24 + 72;            // of point 0
@@ -40,9 +40,13 @@ TEST_F(KeyFrameMapCorrupt, HeaderProblemsAreNamed) {
   EXPECT_NE(Why("DSLAMVOC" + bytes_.substr(8)).find("kfm.bin: not a dslam keyframe map"),
             std::string::npos);
   EXPECT_NE(Why("hello").find("not a dslam keyframe map"), std::string::npos);
-  EXPECT_EQ(Why(Patched(bytes_, 8, 2, 4)),
-            "kfm.bin: unsupported format version 2 (this build reads 1)");
-  EXPECT_EQ(Why(bytes_.substr(0, 100)),
+  EXPECT_EQ(Why(Patched(bytes_, 8, 3, 4)),
+            "kfm.bin: unsupported format version 3 (this build reads 1 and 2)");
+  EXPECT_EQ(Why(Patched(bytes_, 8, 0, 4)),
+            "kfm.bin: unsupported format version 0 (this build reads 1 and 2)");
+  EXPECT_EQ(Why(bytes_.substr(0, 170)),
+            "kfm.bin: truncated: expected at least 180 bytes (the header), got 170");
+  EXPECT_EQ(Why(Patched(bytes_, 8, 1, 4).substr(0, 100)),
             "kfm.bin: truncated: expected at least 128 bytes (the header), got 100");
   EXPECT_EQ(Why(bytes_.substr(0, 1000)),
             "kfm.bin: truncated: expected " + std::to_string(bytes_.size()) + " bytes, got 1000");
@@ -115,6 +119,35 @@ TEST_F(KeyFrameMapCorrupt, InvalidContentsWithARightChecksumAreNamed) {
   EXPECT_NE(why(Patched(one, kFirstPoint, 0xFFFFFFFFu, 4)).find("keyframe id -1 is negative"),
             std::string::npos);
   EXPECT_NE(why(bytes_ + "tail").find("4 bytes after the last record"), std::string::npos);
+}
+
+TEST_F(KeyFrameMapCorrupt, OutOfRangeNumbersWithARightChecksumAreNamed) {
+  const auto why = [](const std::string& bytes) { return Why(Resealed(bytes)); };
+  const std::string one = SerialiseKeyFrameMap(test::SampleMapFile(0, 1, false));
+  EXPECT_NE(why(Patched(one, kFirstPoint + 4, 0x7FFFFFFFu, 4))
+                .find("invalid content: keyframe 5 has frame_index 2147483647, above 1073741823"),
+            std::string::npos);
+  EXPECT_NE(why(Patched(one, kFirstPoint, 0x7FFFFFFFu, 4))
+                .find("invalid content: keyframe id 2147483647 is above 1073741823"),
+            std::string::npos);
+  // The information's first element -1: not positive definite.
+  EXPECT_NE(why(Patched(one, kFirstPoint + 4 + 4 + 8 + 96, 0xBFF0000000000000ull, 8))
+                .find("keyframe 5 has an information matrix that is neither zero (unknown) nor "
+                      "symmetric positive definite"),
+            std::string::npos);
+  // Point 0's cov_world(0, 1) 1: not symmetric.
+  EXPECT_NE(why(Patched(bytes_, kFirstPoint + 8 + 24 + 8, 0x3FF0000000000000ull, 8))
+                .find("map point 1 has a covariance (cov_world) that is not symmetric positive "
+                      "definite"),
+            std::string::npos);
+  EXPECT_NE(why(Patched(bytes_, kFirstPoint + 2 * kPointWithDescriptor, 0x7FFFFFFFFFFFFFFFull, 8))
+                .find("map point id 9223372036854775807 is above 4611686018427387903"),
+            std::string::npos);
+  EXPECT_NE(why(Patched(bytes_, kSettings, 0, 4)).find("settings: features.num_levels 0, not >= 1"),
+            std::string::npos);
+  EXPECT_NE(why(Patched(bytes_, kSettings + 4, 0x3FF0000000000000ull, 8))
+                .find("settings: features.scale_factor 1, not finite and > 1"),
+            std::string::npos);
 }
 
 TEST(KeyFrameMapImages, BadImagesAreNamed) {

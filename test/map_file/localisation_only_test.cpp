@@ -52,7 +52,7 @@ std::string LoadedPartBytes(const KeyFrameMapFile& file, const MapContents& cont
   std::set<PointId> point_ids;
   for (const KeyFrame& keyframe : file.contents.keyframes) keyframe_ids.insert(keyframe.id);
   for (const MapPoint& point : file.contents.points) point_ids.insert(point.id);
-  KeyFrameMapFile part{file.camera, file.vocabulary_identity, {}, {}};
+  KeyFrameMapFile part{file.camera, file.vocabulary_identity, {}, {}, file.settings};
   for (const KeyFrame& keyframe : contents.keyframes) {
     if (keyframe_ids.count(keyframe.id) != 0) part.contents.keyframes.push_back(keyframe);
   }

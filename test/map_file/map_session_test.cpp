@@ -1,7 +1,7 @@
 // A keyframe map file in a running Slam (keyframe_map_session.h) on a short static_room sequence
 // rendered in-process: images kept for the map's keyframes, the file taken from the map, the
-// loaded keyframes handed to the observers after the reset, and a file of another camera
-// refused.
+// loaded keyframes handed to the observers after the reset, and a file of another camera or
+// other ORB or depth noise settings refused.
 #include <memory>
 #include <set>
 #include <string>
@@ -98,6 +98,24 @@ TEST(MapSession, AFileOfAnotherCameraIsRefusedAndTheRunGoesOn) {
   EXPECT_NE(why.find("camera"), std::string::npos) << why;
   EXPECT_FALSE(slam.Localising());
   EXPECT_TRUE(slam.ProcessFrame(room.frames[0]).has_pose);  // a map of its own from scratch
+}
+
+TEST(MapSession, AFileOfOtherOrbOrDepthNoiseSettingsIsRefused) {
+  const test::RenderedSequence& room = test::SharedSequence("static_room", kFrames);
+  const KeyFrameMapFile file = MappedRoom(room);
+  ASSERT_TRUE(file.settings.has_value());
+  EXPECT_EQ(file.settings->orb_levels, Config().features.num_levels);
+  Config config;
+  config.features.scale_factor = 1.3;
+  Slam slam{config};
+  EXPECT_EQ(StartInKeyFrameMap(file, room.frames[0].camera, DefaultVocabulary(), 10.0, &slam),
+            "recorded with features.scale_factor 1.2 but this run uses 1.3");
+  EXPECT_FALSE(slam.Localising());
+  config = Config();
+  config.depth_noise.sigma_d_constant_m = 2e-3;
+  Slam other{config};
+  EXPECT_EQ(StartInKeyFrameMap(file, room.frames[0].camera, DefaultVocabulary(), 10.0, &other),
+            "recorded with depth_noise.sigma_d_constant_m 0.001 but this run uses 0.002");
 }
 
 }  // namespace

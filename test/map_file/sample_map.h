@@ -23,7 +23,10 @@ inline MapPoint SamplePoint(int i) {
   MapPoint p;
   p.id = 3 * i + 1;
   p.p_world = Eigen::Vector3d(0.1 * i, -0.2 * i, 1.0 + i);
-  for (int k = 0; k < 9; ++k) p.cov_world(k / 3, k % 3) = 1e-4 * (k + 1) + i;
+  for (int r = 0; r < 3; ++r) {  // symmetric, diagonally dominant: positive definite
+    for (int c = 0; c < 3; ++c)
+      p.cov_world(r, c) = r == c ? 1e-3 * (r + 1) + 1e-4 * i : 1e-5 * (r + c + 1);
+  }
   if (i % 3 != 2) {
     p.descriptor = cv::Mat(1, 32, CV_8U);
     for (int k = 0; k < 32; ++k) p.descriptor.at<uchar>(0, k) = static_cast<uchar>(7 * k + i);
@@ -94,9 +97,15 @@ inline KeyFrameImages SampleImages(int k, bool grey = false) {
   return images;
 }
 
-/// A file of `points` points and `keyframes` keyframes, images of every other keyframe.
+/// Settings with every field off its default.
+inline KeyFrameMapSettings SampleSettings() {
+  return KeyFrameMapSettings{6, 1.25, DepthNoiseConfig{1.5, 2e-3, 1.5e-3, 0.25, 7.5}};
+}
+
+/// A file of `points` points and `keyframes` keyframes, images of every other keyframe, with
+/// SampleSettings (format version 2).
 inline KeyFrameMapFile SampleMapFile(int points, int keyframes, bool images) {
-  KeyFrameMapFile file{SampleCamera(), 0x723a8e39b1688a18ull, {}, {}};
+  KeyFrameMapFile file{SampleCamera(), 0x723a8e39b1688a18ull, {}, {}, SampleSettings()};
   for (int i = 0; i < points; ++i) file.contents.points.push_back(SamplePoint(i));
   for (int k = 0; k < keyframes; ++k) {
     file.contents.keyframes.push_back(SampleKeyFrame(k, points));
@@ -152,9 +161,28 @@ inline void ExpectSameKeyFrame(const KeyFrame& k, const KeyFrame& l) {
   EXPECT_EQ(k.weak_since_previous, l.weak_since_previous);
 }
 
-/// Expects equal camera, identity, points and keyframes; images are compared by the caller.
+/// Expects equal settings (bit for bit; or none in both).
+inline void ExpectSameSettings(const KeyFrameMapFile& a, const KeyFrameMapFile& b) {
+  ASSERT_EQ(a.settings.has_value(), b.settings.has_value());
+  if (!a.settings) return;
+  EXPECT_EQ(a.settings->orb_levels, b.settings->orb_levels);
+  EXPECT_EQ(a.settings->orb_scale_factor, b.settings->orb_scale_factor);
+  const DepthNoiseConfig& m = a.settings->depth_noise;
+  const DepthNoiseConfig& n = b.settings->depth_noise;
+  EXPECT_EQ(m.pixel_sigma_px, n.pixel_sigma_px);
+  EXPECT_EQ(m.sigma_d_quadratic, n.sigma_d_quadratic);
+  EXPECT_EQ(m.sigma_d_constant_m, n.sigma_d_constant_m);
+  EXPECT_EQ(m.min_depth_m, n.min_depth_m);
+  EXPECT_EQ(m.max_depth_m, n.max_depth_m);
+}
+
+/// Expects equal camera, identity, settings, points and keyframes; images are compared by the
+/// caller.
 inline void ExpectSameMap(const KeyFrameMapFile& a, const KeyFrameMapFile& b) {
-  EXPECT_EQ(CheckCompatible(a, b.camera, b.vocabulary_identity), "");
+  EXPECT_EQ(CheckCompatible(a, b.camera, b.vocabulary_identity,
+                            b.settings.value_or(KeyFrameMapSettings{})),
+            "");
+  ExpectSameSettings(a, b);
   ASSERT_EQ(a.contents.points.size(), b.contents.points.size());
   ASSERT_EQ(a.contents.keyframes.size(), b.contents.keyframes.size());
   for (size_t i = 0; i < a.contents.points.size(); ++i) {

@@ -136,8 +136,9 @@ class RunDatasetCliTest(unittest.TestCase):
 
     def test_save_keyframe_map(self):
         """The header of the keyframe map file (include/dslam/map_file/keyframe_map_file.h):
-        size, checksum, the sequence's camera, the committed vocabulary's identity (loop closing
-        on or off), and images of every keyframe; synchronous and with --threads."""
+        version 2, size, checksum, the sequence's camera, the committed vocabulary's identity
+        (loop closing on or off), images of every keyframe and the settings; synchronous and with
+        --threads."""
         for name, options in (("kfm_sync", ["--loop-closing", "off"]), ("kfm_threads", ["--threads"])):
             path = os.path.join(self.tmp, name + ".bin")
             code, summary, _, _ = self.run_tool(name, "--save-keyframe-map", path, *options)
@@ -145,7 +146,7 @@ class RunDatasetCliTest(unittest.TestCase):
             with open(path, "rb") as handle:
                 data = handle.read()
             magic, version, size, checksum = struct.unpack_from("<8sIQQ", data, 0)
-            self.assertEqual((magic, version, size), (b"DSLAMKFM", 1, len(data)), name)
+            self.assertEqual((magic, version, size), (b"DSLAMKFM", 2, len(data)), name)
             self.assertEqual(checksum, fnv1a64(data[28:]), name)
             width, height = struct.unpack_from("<II", data, 28)
             with open(os.path.join(self.sequence, "camera.yaml")) as handle:
@@ -156,6 +157,9 @@ class RunDatasetCliTest(unittest.TestCase):
             self.assertGreater(points, 100, name)
             self.assertGreater(keyframes, 1, name)
             self.assertEqual(images, keyframes, name)  # the map keeps every keyframe of 30 frames
+            # Version 2's settings: the default config's ORB pyramid and depth noise model.
+            levels, scale, pixel_sigma = struct.unpack_from("<Idd", data, 128)
+            self.assertEqual((levels, scale, pixel_sigma), (8, 1.2, 1.0), name)
             self.assertFalse([f for f in os.listdir(self.tmp) if ".tmp-" in f])
 
     def test_localisation_only_saves_the_loaded_map_unchanged(self):

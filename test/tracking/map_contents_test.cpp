@@ -1,4 +1,6 @@
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +73,28 @@ TEST(MapContents, RepeatedOrNegativeIdsAreRefused) {
   contents = ThreeKeyFrames().Contents();
   contents.keyframes[0].id = -1;
   EXPECT_THROW(Map::FromContents(contents), std::invalid_argument);
+}
+
+TEST(MapContents, IdsWhoseNextWouldOverflowAreRefused) {
+  MapContents contents = ThreeKeyFrames().Contents();
+  contents.keyframes[2].id = std::numeric_limits<int>::max();
+  const auto message = [](const MapContents& c) {
+    try {
+      Map::FromContents(c);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_EQ(message(contents),
+            "keyframe id 2147483647 is the largest int: the next keyframe's id would overflow");
+  contents.keyframes[2].id = std::numeric_limits<int>::max() - 1;  // the next id still fits
+  EXPECT_NO_THROW(Map::FromContents(contents));
+  contents = ThreeKeyFrames().Contents();
+  contents.points[5].id = std::numeric_limits<PointId>::max();
+  EXPECT_EQ(message(contents),
+            "map point id 9223372036854775807 is the largest PointId: the next point's id would "
+            "overflow");
 }
 
 TEST(MapContents, SetWindowToChoosesTheWindowAndErasesNothing) {

@@ -1,6 +1,8 @@
 // Odometry::StartInMap without the place recognition of loop_closing: a PlaceLookup that names a
 // given keyframe, or none, on a short static_room sequence rendered in-process; with
 // LoadedMapUse::kLocalisationOnly, the run that never leaves the loaded map.
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +38,28 @@ Map MapOfFirstFrames(int frames) {
   Odometry odometry{Config()};
   for (int i = 0; i < frames; ++i) odometry.ProcessFrame(room.frames[i]);
   return Map::FromContents(odometry.map().Contents());
+}
+
+TEST(OdometryLocalisation, AFrameIndexWhoseNextWouldOverflowIsRefused) {
+  MapContents contents;
+  KeyFrame keyframe;
+  keyframe.id = 0;
+  keyframe.frame_index = std::numeric_limits<int>::max();
+  contents.keyframes.push_back(keyframe);
+  Odometry odometry{Config()};
+  const auto places = std::make_shared<FixedPlaces>(std::vector<int>{0});
+  try {
+    odometry.StartInMap(Map::FromContents(contents), places, 5.0);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "Odometry::StartInMap: keyframe frame_index 2147483647 is the largest int: the "
+              "next frame's index would overflow");
+  }
+  EXPECT_FALSE(odometry.localising());
+  contents.keyframes[0].frame_index = std::numeric_limits<int>::max() - 1;  // the next one fits
+  odometry.StartInMap(Map::FromContents(contents), places, 5.0);
+  EXPECT_TRUE(odometry.localising());
 }
 
 TEST(OdometryLocalisation, LocalisesAtTheNamedPlaceInTheLoadedWorld) {

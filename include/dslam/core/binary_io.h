@@ -31,10 +31,10 @@ std::uint64_t Fnv1a64(const char* data, std::size_t size);
 /// identity and docs state it).
 std::string FormatIdentity(std::uint64_t identity);
 
-/// Writes `bytes` to `path` + ".tmp-<pid>" and renames that file to `path` once it is complete,
-/// so that `path` is either its old file or the new one, never a part of it. On failure removes
-/// the temporary file and throws std::runtime_error "<who>: cannot write <temporary>" or
-/// "<who>: cannot rename <temporary> to <path>: <reason>".
+/// Writes `bytes` as WriteFileAtomically of core/atomic_file.h does (a temporary file, fsync,
+/// rename, fsync of the folder), so that `path` is either its old file or the new one. On failure
+/// removes the temporary file and throws std::runtime_error "<who>: cannot write <temporary>" or
+/// "<who>: cannot rename <temporary> to <path>: <reason>" (atomic_file.h).
 void WriteFileAtomically(const std::string& path, const std::string& bytes, const std::string& who);
 
 /// The whole file at `path`. Throws std::runtime_error "<who>: <path>: cannot open the file" or

@@ -40,7 +40,8 @@ class KeyFrameImageKeeper : public KeyFrameObserver {
 };
 
 /// `slam`'s keyframe map now (Map::Contents under Slam::ReadMap) with `camera`,
-/// `vocabulary_identity` and the images `keeper` (may be null: none) kept of its keyframes.
+/// `vocabulary_identity`, the settings of `slam`'s config (KeyFrameMapSettingsOf) and the images
+/// `keeper` (may be null: none) kept of its keyframes.
 KeyFrameMapFile KeyFrameMapOf(const Slam& slam, const PinholeCamera& camera,
                               std::uint64_t vocabulary_identity, const KeyFrameImageKeeper* keeper);
 
@@ -52,11 +53,11 @@ std::vector<KeyFrameRecord> LoadedKeyFrameRecords(const KeyFrameMapFile& file,
                                                   std::shared_ptr<const PinholeCamera> camera);
 
 /// Starts `slam` in the map of `file` when CheckCompatible(file, *camera,
-/// vocabulary->identity()) passes: Slam::StartInMap with MapPlaces over `vocabulary`, timeout
-/// `localise_timeout_s` [s], LoadedKeyFrameRecords and `use` (LoadedMapUse::kLocalisationOnly:
-/// the map stays as loaded; a save should then write `file` itself). Returns "" then; otherwise
-/// why the file does not fit this run, and `slam` is unchanged. Throws std::invalid_argument as
-/// StartInMap.
+/// vocabulary->identity(), KeyFrameMapSettingsOf(slam->config())) passes: Slam::StartInMap with
+/// MapPlaces over `vocabulary`, timeout `localise_timeout_s` [s], LoadedKeyFrameRecords and `use`
+/// (LoadedMapUse::kLocalisationOnly: the map stays as loaded; a save should then write `file`
+/// itself). Returns "" then; otherwise why the file does not fit this run, and `slam` is unchanged.
+/// Throws std::invalid_argument as StartInMap.
 std::string StartInKeyFrameMap(KeyFrameMapFile file, std::shared_ptr<const PinholeCamera> camera,
                                std::shared_ptr<const Vocabulary> vocabulary,
                                double localise_timeout_s, Slam* slam,

@@ -51,14 +51,17 @@ class KeyFrameMapFiles {
   /// The reset service reset the odometry (worker thread): the next frame starts in the loaded
   /// map again.
   void AfterReset();
-  /// Writes config.save_keyframe_map_on_exit when set (call before the Slam is destroyed).
+  /// Writes config.save_keyframe_map_on_exit when set (call before the Slam is destroyed),
+  /// keeping a file already there as PATH.prev.
   void SaveOnExit();
 
  private:
   bool OnSave(dslam::SaveKeyFrameMap::Request& req, dslam::SaveKeyFrameMap::Response& res);
   /// Saves the map to `path` (the loaded file when the node localises only in it); returns the
   /// response's message, throws on failure.
-  std::string Save(const std::string& path, int* keyframes, int* points);
+  /// `previous`: PreviousFile::kKeep keeps a file already at `path` as `path` + ".prev".
+  std::string Save(const std::string& path, int* keyframes, int* points,
+                   PreviousFile previous = PreviousFile::kReplace);
   /// " (~localisation_only has no effect)" when it is set, else "": for a refused map's error.
   const char* NoEffect() const;
 

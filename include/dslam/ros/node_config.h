@@ -105,8 +105,9 @@ struct NodeConfig {
             "keyframe map file (save_keyframe_map, dslam_run_dataset --save-keyframe-map) to "
             "start in: no pose (status 'localising') until a frame is relocalised in it, then "
             "every pose in its world (its first run's first frame); the map is extended (not with "
-            "localisation_only). A file that cannot be read or has another camera or vocabulary "
-            "is refused with the reason and the node maps from scratch; empty: none"),
+            "localisation_only). A file that cannot be read or has another camera, vocabulary, "
+            "ORB settings or depth noise model is refused with the reason and the node maps "
+            "from scratch; empty: none"),
       s.keyframe_map);
     v(Flag("localisation_only",
            "track in keyframe_map without changing it: its keyframes and points are never moved, "
@@ -121,7 +122,8 @@ struct NodeConfig {
             "localisation_only"),
       s.localise_timeout_s);
     v(Field("save_keyframe_map_on_exit", "-", 0, 0,
-            "keyframe map file written when the node shuts down; empty: none"),
+            "keyframe map file written when the node shuts down (a file already there is kept "
+            "as PATH.prev); empty: none"),
       s.save_keyframe_map_on_exit);
     v(Flag("keyframe_map_images",
            "keep each map keyframe's colour and depth (about 2 MB per 640x480 keyframe, up to "

@@ -144,7 +144,7 @@ class Map {
   /// A map of `contents`: ids kept, the next ids after the largest, every keyframe archived (no
   /// window until SetWindowTo or AddKeyFrame), observing_keyframes counted from the keyframes'
   /// point lists, ids in keyframe lists that name no point dropped. Throws std::invalid_argument
-  /// when a point or keyframe id is negative or repeats.
+  /// when a point or keyframe id is negative, repeats or is its type's largest (next id overflows).
   static Map FromContents(MapContents contents);
   /// Makes the keyframes with `ids` (those in the map) the window, the newest `recent` of them
   /// recent (negative: all); the others go to the archive (none is erased). For a tracker that

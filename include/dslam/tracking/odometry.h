@@ -77,8 +77,8 @@ class Odometry {
   /// (ResetMode::kNewWorld: FrameResult::reset and message say so) and a new map starts there;
   /// with LoadedMapUse::kLocalisationOnly there is no timeout, and `places` also serves lost
   /// frames when SetPlaceLookup gave none. Frame indices continue after the newest frame of
-  /// `map`. Throws std::invalid_argument when `places` is null, `timeout_s` is not positive or
-  /// tracking.relocalisation is off.
+  /// `map`. Throws std::invalid_argument when `places` is null, `timeout_s` is not positive,
+  /// tracking.relocalisation is off or a keyframe's frame_index is INT_MAX (odometry unchanged).
   void StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double timeout_s,
                   LoadedMapUse use = LoadedMapUse::kExtend);
   /// Between StartInMap and the first frame localised in the map (or its timeout).
