@@ -311,11 +311,13 @@ LockHold Slam::TakeLongestMapLockHold() {
   return std::exchange(longest_hold_, LockHold());
 }
 
-Trajectory Slam::RefinedPoses() const {
+Trajectory Slam::RefinedPoses(double* lock_held_ms) const {
   RefinedTrajectory::Snapshot snapshot;
   {
     const Lock lock(map_mutex_, &longest_hold_, "refined trajectory");
+    const Stopwatch held;
     snapshot = refined_.Take();  // a few block pointers and the keyframes in the map
+    if (lock_held_ms != nullptr) *lock_held_ms = held.ElapsedMs();
   }
   return snapshot.Poses();
 }

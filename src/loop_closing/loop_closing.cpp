@@ -50,6 +50,8 @@ void LoopClosing::HandleKeyFrame(int id, bool loaded, bool temporary,
   ProcessKeyFrame(id);
   const std::lock_guard<std::mutex> lock(mutex_);
   times_ms_.push_back(stopwatch.ElapsedMs());
+  if (times_ms_.size() > kKeptTimes) times_ms_.pop_front();
+  ++keyframes_timed_;
 }
 
 void LoopClosing::Wait() { worker_->Wait(); }
@@ -127,6 +129,15 @@ void LoopClosing::PruneErased(const Map& map) {
     }
   }
   in_database_ = std::move(kept);
+  // Edges of erased keyframes never enter a pose graph again (BuildLoopPoseGraph skips them).
+  std::vector<LoopEdge> edges;
+  for (const LoopEdge& edge : loop_edges_) {
+    if (map.FindKeyFrame(edge.match_keyframe_id) != nullptr &&
+        map.FindKeyFrame(edge.query_keyframe_id) != nullptr) {
+      edges.push_back(edge);
+    }
+  }
+  loop_edges_ = std::move(edges);
 }
 
 void LoopClosing::OnReset(ResetMode /*mode*/) {
@@ -145,7 +156,7 @@ std::vector<ClosedLoop> LoopClosing::loops() const {
 
 std::vector<double> LoopClosing::times_ms() const {
   const std::lock_guard<std::mutex> lock(mutex_);
-  return times_ms_;
+  return std::vector<double>(times_ms_.begin(), times_ms_.end());
 }
 
 LoopWork LoopClosing::work() const {
@@ -153,7 +164,7 @@ LoopWork LoopClosing::work() const {
   LoopWork work;
   work.loops = static_cast<int>(loops_.size());
   work.dropped = dropped_loops_;
-  work.keyframes = static_cast<int>(times_ms_.size());
+  work.keyframes = keyframes_timed_;
   if (!times_ms_.empty()) work.last_ms = times_ms_.back();
   return work;
 }

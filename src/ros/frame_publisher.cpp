@@ -180,6 +180,7 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
   s.frames_dropped = counters.dropped;
   s.frames_rejected = counters.rejected;
   s.errors = counters.errors;
+  s.map_lock_max_ms = counters.map_lock_max_ms;
   status_pub_.publish(s);
 }
 

@@ -76,6 +76,11 @@ void KeyFrameMapFiles::AfterFrame(const FrameResult& result, bool was_localising
 
 void KeyFrameMapFiles::AfterReset() { start_due_ = loaded_ != nullptr; }
 
+bool KeyFrameMapFiles::HasLoadedMap() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return loaded_ != nullptr;
+}
+
 void KeyFrameMapFiles::SaveOnExit() {
   if (config_.save_keyframe_map_on_exit.empty()) return;
   try {

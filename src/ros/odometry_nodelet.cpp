@@ -4,6 +4,7 @@
 
 #include <malloc.h>
 
+#include <cstdio>
 #include <stdexcept>
 
 #include <pluginlib/class_list_macros.hpp>
@@ -180,9 +181,11 @@ void OdometryNodelet::OnImages(const sensor_msgs::ImageConstPtr& colour,
 bool OdometryNodelet::OnReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   reset_requested_ = true;  // the worker resets before its next frame: no frame is in between
   res.success = true;
-  res.message =
-      "odometry resets before the next frame and re-initialises at the last pose (odom stays "
-      "continuous)";
+  res.message = keyframe_maps_->HasLoadedMap()
+                    ? "odometry resets before the next frame and starts localising in the loaded "
+                      "keyframe map again (no pose until a frame is relocalised in it)"
+                    : "odometry resets before the next frame and re-initialises at the last pose "
+                      "(odom stays continuous)";
   return true;
 }
 
@@ -218,14 +221,18 @@ bool OdometryNodelet::OnSaveRefinedTrajectory(dslam::SaveTrajectory::Request& re
     first_stamp_s = segment_first_stamp_s_;
   }
   try {
-    // The map lock only while RefinedPoses copies; the file is written after it.
+    // The map lock only while RefinedPoses copies its blocks; the file is written after it.
+    double lock_held_ms = 0.0;
     const Trajectory segment =
-        first_stamp_s ? CurrentSegment(slam_->RefinedPoses(), *first_stamp_s) : Trajectory();
+        first_stamp_s ? CurrentSegment(slam_->RefinedPoses(&lock_held_ms), *first_stamp_s)
+                      : Trajectory();
     WriteTumTrajectory(req.path, segment);
     res.poses = static_cast<int>(segment.size());
     res.success = true;
+    char held[64];
+    std::snprintf(held, sizeof(held), " (map lock held %.3f ms)", lock_held_ms);
     res.message = "wrote " + std::to_string(res.poses) +
-                  " refined poses of the current segment to " + req.path;
+                  " refined poses of the current segment to " + req.path + held;
   } catch (const std::exception& e) {
     res.success = false;
     res.message = e.what();

@@ -18,18 +18,21 @@ void OdometryNodelet::WorkerLoop() {
       NODELET_ERROR_THROTTLE(1.0, "dslam: frame skipped: %s", e.what());
     }
     LogBackgroundErrors();
-    LogLongestLockHold();
   }
 }
 
-void OdometryNodelet::LogLongestLockHold() {
-  const ros::WallTime now = ros::WallTime::now();
-  if (last_lock_log_.isZero()) last_lock_log_ = now;
-  if ((now - last_lock_log_).toSec() < 60.0) return;
-  last_lock_log_ = now;
+LockHold OdometryNodelet::TakeLockHold() {
   const LockHold hold = slam_->TakeLongestMapLockHold();
-  NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", hold.ms,
-               hold.where);
+  if (hold.ms > minute_hold_.ms) minute_hold_ = hold;
+  const ros::WallTime now = ros::WallTime::now();
+  if (minute_start_.isZero()) minute_start_ = now;
+  if ((now - minute_start_).toSec() >= 60.0) {
+    NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", minute_hold_.ms,
+                 minute_hold_.where);
+    minute_start_ = now;
+    minute_hold_ = LockHold();
+  }
+  return hold;
 }
 
 void OdometryNodelet::LogBackgroundErrors() {
@@ -61,6 +64,7 @@ void OdometryNodelet::Process(const Input& input) {
   request.edges = publisher_->WantsEdges();
   const bool was_localising = slam_->Localising();
   FrameResult result = slam_->ProcessFrame(frame, request);
+  map_lock_max_ms_ = TakeLockHold().ms;
   keyframe_maps_->AfterFrame(result, was_localising);
   ++processed_;
   const bool new_world = result.reset;  // the odometry's own reset: time went backwards
@@ -73,7 +77,9 @@ void OdometryNodelet::Process(const Input& input) {
   }
   if (service_reset) {
     result.reset = true;
-    result.message = "reset by the reset service: re-initialised at the last pose";
+    result.message = keyframe_maps_->HasLoadedMap()
+                         ? "reset by the reset service: localising in the loaded keyframe map"
+                         : "reset by the reset service: re-initialised at the last pose";
   }
   if (result.state == TrackingState::kLost) {
     NODELET_WARN_THROTTLE(2.0, "dslam: tracking lost: %s", result.message.c_str());
@@ -118,7 +124,9 @@ std::string OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
 bool OdometryNodelet::ApplyRequestedReset() {
   if (!reset_requested_.exchange(false)) return false;
   slam_->Reset(ResetMode::kKeepPose);
-  NODELET_INFO("dslam: reset by the reset service: re-initialising at the last pose");
+  NODELET_INFO("dslam: reset by the reset service: %s",
+               keyframe_maps_->HasLoadedMap() ? "localising in the loaded keyframe map"
+                                              : "re-initialising at the last pose");
   return true;
 }
 
@@ -157,7 +165,8 @@ FrameCounters OdometryNodelet::Counters() const {
   if (slam_) errors += slam_->errors()->count();
   if (loop_closing_) errors += loop_closing_->errors()->count();
   if (objects_publisher_) errors += objects_publisher_->errors().count();
-  return {received_.load(), processed_.load(), slot_.dropped(), rejected_.load(), errors};
+  return {received_.load(), processed_.load(), slot_.dropped(), rejected_.load(),
+          errors,           map_lock_max_ms_};
 }
 
 const Eigen::Isometry3d& OdometryNodelet::CameraMount(const std::string& camera_frame,

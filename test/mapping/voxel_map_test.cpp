@@ -1,8 +1,12 @@
 // The static map's voxel store and keyframe back-projection with known answers: a plane fused
 // into voxels, carving by a view that sees through, cropping to the extent.
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -116,6 +120,53 @@ TEST(VoxelMap, CropKeepsTheCubeAroundTheCentre) {
   // Half-side 3.5 m around (0, 0, 0): x and z in [-3.5, 3.5] keep i = -3 .. 3 on each line.
   EXPECT_EQ(map.Crop(Eigen::Vector3f::Zero(), 3.5), 41u - 13u);
   EXPECT_EQ(map.size(), 13u);
+}
+
+// Carve visits only the voxels of the keyframes it votes for and Crop walks only when the box of
+// the fused points leaves its cube: the same voxels, votes and counts as walking every voxel
+// (`every`: a first Carve with the largest oldest_keyframe makes each later one walk them all).
+TEST(VoxelMap, CarveAndCropGiveWhatAWalkOverEveryVoxelGives) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> lateral(-1.2f, 1.2f), depth(1.0f, 3.6f);
+  VoxelMap recent(0.05), every(0.05);
+  const FreeSpaceTolerance tolerance = FreeSpaceTolerance::From(MapTestConfig().map, 0.3, 4.0);
+  size_t carved = 0, cropped = 0;
+  for (int k = 0; k < 60; ++k) {
+    Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+    T_world_camera.translation() = Eigen::Vector3d(0.05 * k, 0.0, 0.0);
+    const Eigen::Vector3f origin = T_world_camera.translation().cast<float>();
+    for (int i = 0; i < 400; ++i) {
+      const ColouredPoint point{origin + Eigen::Vector3f(lateral(rng), lateral(rng), depth(rng)), 0,
+                                0, 0};
+      recent.Add(point, k);
+      every.Add(point, k);
+    }
+    const KeyFrameRecord wall = MakeKeyFrame(k, Wall(2.0f + 0.03f * (k % 20)), T_world_camera);
+    const DepthView view(wall.frame, T_world_camera, 4, 0.3);
+    if (k == 0) every.Carve(view, tolerance, std::numeric_limits<int>::max());
+    const size_t removed = recent.Carve(view, tolerance, k - 8);
+    ASSERT_EQ(removed, every.Carve(view, tolerance, k - 8)) << k;
+    carved += removed;
+    // Crop around a centre that leaves old points behind now and then.
+    const Eigen::Vector3f centre = origin + Eigen::Vector3f(0.0f, 0.0f, 2.0f);
+    size_t outside = 0;
+    for (const ColouredPoint& point : recent.Points()) {
+      outside += (point.p - centre).cwiseAbs().maxCoeff() > 1.6f;
+    }
+    ASSERT_EQ(recent.Crop(centre, 1.6), outside) << k;
+    ASSERT_EQ(every.Crop(centre, 1.6), outside) << k;
+    cropped += outside;
+    ASSERT_EQ(recent.size(), every.size()) << k;
+  }
+  EXPECT_GT(carved, 100u);  // both happened
+  EXPECT_GT(cropped, 100u);
+  const auto sorted = [](const ColouredCloud& cloud) {
+    std::vector<std::tuple<float, float, float>> points;
+    for (const ColouredPoint& p : cloud) points.emplace_back(p.p.x(), p.p.y(), p.p.z());
+    std::sort(points.begin(), points.end());
+    return points;
+  };
+  EXPECT_EQ(sorted(recent.Points()), sorted(every.Points()));
 }
 
 TEST(StaticMapper, ExtentBoundsTheMapAroundTheNewestFusedKeyframe) {

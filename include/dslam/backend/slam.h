@@ -150,7 +150,9 @@ class Slam {
 
   /// Every tracked frame re-expressed on its reference keyframe as refined by the back end so
   /// far (RefinedTrajectory, a copy); the same poses as the causal ones with the back end off.
-  Trajectory RefinedPoses() const;
+  /// The map lock is held only to copy RefinedTrajectory::Take (O(keyframes in the map), not
+  /// O(frames)); `lock_held_ms` [ms], when given, receives how long.
+  Trajectory RefinedPoses(double* lock_held_ms = nullptr) const;
 
   /// A copy of the map (keyframe window and points) between two runs of either thread.
   Map MapSnapshot() const;

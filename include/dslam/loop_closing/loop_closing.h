@@ -19,6 +19,8 @@
 // waits for the one in progress; nothing calls Slam after it.
 
 #include <atomic>
+#include <cstddef>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -44,6 +46,10 @@ constexpr int kKeyFramesAfterLoop = 10;
 /// Keyframes waiting for loop closing's thread at most (WorkerMode::kThreaded).
 constexpr int kMaxQueuedKeyFrames = 16;
 
+/// LoopClosing::times_ms keeps the times of this many newest keyframes (memory stays bounded over
+/// hours; LoopWork::keyframes counts them all).
+constexpr size_t kKeptTimes = 4096;
+
 /// Keyframes between two removals of erased keyframes from the place database.
 constexpr int kPruneKeyFrames = 50;
 
@@ -57,9 +63,9 @@ struct ClosedLoop {
 /// How much loop closing has done (LoopClosing::work).
 struct LoopWork {
   int loops = 0;         ///< [-] loops closed
-  int dropped = 0;       ///< [-] verified loops not closed (solve failed, or refused by Slam)
   int keyframes = 0;     ///< [-] keyframes processed (and timed)
   double last_ms = 0.0;  ///< [ms] the newest keyframe's time; 0 before the first
+  int dropped = 0;       ///< [-] verified loops not closed (solve failed, or refused by Slam)
 };
 
 /// Loop closing as at the top of this file.
@@ -90,7 +96,8 @@ class LoopClosing : public KeyFrameObserver {
 
   /// The loops closed so far, oldest first (a copy; any thread).
   std::vector<ClosedLoop> loops() const;
-  /// [ms] time spent per keyframe (detection, and correction when a loop was closed).
+  /// [ms] time spent per keyframe (detection, and correction when a loop was closed), for the
+  /// newest kKeptTimes keyframes, oldest first.
   std::vector<double> times_ms() const;
   /// The number of loops() and of times_ms(), and the newest time, without copying them (any
   /// thread): what a status message shows at every keyframe of a run of any length.
@@ -122,11 +129,14 @@ class LoopClosing : public KeyFrameObserver {
   /// Keyframe ids in the detector's database; those the map erased leave it every
   /// kPruneKeyFrames keyframes, so that it stays as bounded as the map (tracking.max_keyframes).
   std::vector<int> in_database_;
-  std::vector<LoopEdge> loop_edges_;  ///< every accepted loop, for the next loop's pose graph
-  mutable std::mutex mutex_;          ///< guards loops_, times_ms_ and dropped_loops_
+  /// Accepted loops whose keyframes are both in the map, for the next loop's pose graph (pruned
+  /// with the database).
+  std::vector<LoopEdge> loop_edges_;
+  mutable std::mutex mutex_;  ///< guards loops_, times_ms_, keyframes_timed_, dropped_loops_
   std::vector<ClosedLoop> loops_;
   int dropped_loops_ = 0;
-  std::vector<double> times_ms_;
+  std::deque<double> times_ms_;  ///< the newest kKeptTimes
+  int keyframes_timed_ = 0;
   std::atomic<bool> stopping_{false};       ///< OnStop began: queued keyframes are skipped
   const std::shared_ptr<ErrorLog> errors_;  ///< its own lock; given to worker_
   /// Runs the keyframes' work in order; declared last, so that its thread ends (destroyed first)

@@ -3,11 +3,19 @@
 // running mean of the points fused into it and their mean colour) and the votes of the
 // free-space check: hits (keyframes that fused a point into it) and misses (keyframes that saw
 // through it).
+//
+// Cost per keyframe independent of the map's size: Carve visits only the voxels hit by the
+// keyframes it votes for (kept in buckets by keyframe id), and Crop walks the voxels only when
+// the bounding box of every point fused since its last walk leaves the cube it keeps. Both give
+// the voxels a walk over every voxel gives (test/mapping/voxel_map_test.cpp).
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
+#include <map>
 #include <unordered_map>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -37,7 +45,10 @@ class VoxelMap {
 
   /// The point of each voxel last hit by keyframe `oldest_keyframe` or a later one (ids grow with
   /// time) voted on by `view`: a see-through adds a miss; voxels that become transient
-  /// (FreeSpaceTolerance::Transient) are removed. Returns the number removed.
+  /// (FreeSpaceTolerance::Transient) are removed. Returns the number removed. Only the voxels
+  /// voted on can become transient (a voxel is made with a hit and no miss, and a hit never
+  /// makes one transient), so only they are visited; an `oldest_keyframe` below an earlier
+  /// call's (ids not growing) walks every voxel.
   size_t Carve(const DepthView& view, const FreeSpaceTolerance& tolerance, int oldest_keyframe);
 
   /// Removes the voxels whose point lies outside the axis-aligned cube of half-side
@@ -48,7 +59,7 @@ class VoxelMap {
   /// One point per voxel (mean position and colour), in the world frame; order unspecified.
   ColouredCloud Points() const;
   size_t size() const { return voxels_.size(); }  ///< number of voxels
-  void Clear() { voxels_.clear(); }
+  void Clear();
 
  private:
   struct KeyHash {
@@ -67,8 +78,20 @@ class VoxelMap {
     int last_keyframe = -1;                          ///< the keyframe of the last point
   };
 
+  /// Votes of `view` on `voxel` and whether it became transient (Carve's test of one voxel).
+  static bool VoteAndTest(const DepthView& view, const FreeSpaceTolerance& tolerance, Voxel* voxel);
+  size_t CarveAll(const DepthView& view, const FreeSpaceTolerance& tolerance, int oldest_keyframe);
+
   double voxel_size_m_;
   std::unordered_map<Key, Voxel, KeyHash> voxels_;
+  /// Keyframe id -> the voxels whose last_keyframe became that id (a voxel hit again later is
+  /// listed under its newer keyframe too; the older entry is skipped). Buckets below
+  /// `dropped_below_` were dropped.
+  std::map<int, std::vector<Key>> hit_by_keyframe_;
+  int dropped_below_ = std::numeric_limits<int>::min();
+  /// [m] a box holding every voxel's point: grown by each point fused, made tight by Crop's walk.
+  Eigen::Vector3f box_min_ = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f box_max_ = Eigen::Vector3f::Constant(std::numeric_limits<float>::lowest());
 };
 
 }  // namespace dslam

@@ -31,6 +31,7 @@ struct FrameCounters {
   uint64_t dropped = 0;    ///< replaced in the queue before processing
   uint64_t rejected = 0;   ///< bad input (encoding, size, camera)
   uint64_t errors = 0;     ///< errors of work off the frame's call (back end, observers, loops)
+  double map_lock_max_ms = 0.0;  ///< [ms] longest map-lock hold since the previous frame
 };
 
 /// Sets the back-end fields of a FrameStatus message from `backend`: each field of

@@ -51,6 +51,8 @@ class KeyFrameMapFiles {
   /// The reset service reset the odometry (worker thread): the next frame starts in the loaded
   /// map again.
   void AfterReset();
+  /// Whether a reset restarts in the loaded map (a map was loaded and not refused); any thread.
+  bool HasLoadedMap();
   /// Writes config.save_keyframe_map_on_exit when set (call before the Slam is destroyed),
   /// keeping a file already there as PATH.prev.
   void SaveOnExit();
