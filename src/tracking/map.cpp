@@ -21,6 +21,8 @@ PointId Map::AddPoint(MapPoint point) {
   point.id = next_point_id_++;
   const PointId id = point.id;
   points_.emplace(id, std::move(point));
+  recently_seen_set_.insert(id);
+  recently_seen_.push_back(id);
   return id;
 }
 
@@ -120,7 +122,7 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
                                       int static_seen_since_frame) const {
   size_t bound = extra.size();
   for (const KeyFrame& kf : keyframes_) bound += kf.points.size();
-  if (static_seen_since_frame >= 0) bound += points_.size();
+  if (static_seen_since_frame >= 0) bound += recently_seen_.size();
   IdSet seen(bound);
   std::vector<PointId> local;
   local.reserve(bound);
@@ -133,10 +135,23 @@ std::vector<PointId> Map::LocalPoints(const std::vector<PointId>& extra,
   }
   for (PointId id : extra) add(id);
   if (static_seen_since_frame < 0) return local;
-  for (const auto& [id, point] : points_) {
-    if (point.IsVerifiedStatic() && point.last_seen_frame >= static_seen_since_frame) add(id);
+  size_t kept = 0;
+  for (const PointId id : recently_seen_) {
+    const auto it = points_.find(id);
+    if (it == points_.end() || it->second.last_seen_frame < static_seen_since_frame) {
+      recently_seen_set_.erase(id);  // erased, or not seen since: listed again when seen
+      continue;
+    }
+    recently_seen_[kept++] = id;
+    if (it->second.IsVerifiedStatic()) add(id);
   }
+  recently_seen_.resize(kept);
   return local;
+}
+
+void Map::MarkSeen(MapPoint* point, int frame) {
+  point->last_seen_frame = frame;
+  if (recently_seen_set_.insert(point->id).second) recently_seen_.push_back(point->id);
 }
 
 int Map::Cull(int oldest_frame_to_keep, double min_found_ratio, int min_visible,
@@ -285,6 +300,8 @@ void Map::MoveKeyFramesAndPoints(
 
 void Map::Clear() {
   points_.clear();
+  recently_seen_.clear();
+  recently_seen_set_.clear();
   keyframes_.clear();
   archive_.clear();
   recent_in_window_ = 0;

@@ -36,6 +36,8 @@ Map Map::FromContents(MapContents contents) {
     if (!map.points_.emplace(id, std::move(point)).second) {
       throw std::invalid_argument("map point id " + std::to_string(id) + " repeats");
     }
+    map.recently_seen_set_.insert(id);  // LocalPoints drops those not seen recently
+    map.recently_seen_.push_back(id);
   }
   for (KeyFrame& keyframe : contents.keyframes) {
     if (keyframe.id < 0)

@@ -190,7 +190,7 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
     if (measurement) previous_.by_point.emplace(match.id, *measurement);
     if (map_.IsFrozenPoint(match.id)) continue;  // a frozen point stays as it was
     ++point->times_found;
-    point->last_seen_frame = frame_index_ - 1;
+    map_.MarkSeen(point, frame_index_ - 1);
     if (measurement && !point->marked) {
       // Unmarked points follow their object (Sec. V-C, update): matching keeps claiming its
       // features, so they do not come back as new marked points.

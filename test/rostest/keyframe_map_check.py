@@ -30,8 +30,8 @@ from rostest_helpers import Recorder, play_bag, tum_matrix  # noqa: E402
 
 FRAMES = 60
 # static_room moves 0.2-0.3 m from frame 0 by frames 30-59: a node in its own world would be that
-# far off; offline runs localise at the first frame and stay within 5 mm (test_localisation)
-POSITION_TOLERANCE_M = 0.03
+# far off; measured here (e841b8d): localised at the first frame, worst error 0.0033 m
+POSITION_TOLERANCE_M = 0.007
 MAX_LOCALISING_FRAMES = 10  # the bound is 30 frames on real data
 
 
@@ -45,6 +45,7 @@ class KeyFrameMapTest(unittest.TestCase):
         save = rospy.ServiceProxy("/dslam/save_keyframe_map", SaveKeyFrameMap)
         refused = save(os.path.join(work, "missing", "folder", "room.kfm"))
         self.assertFalse(refused.success)
+        self.assertIn(os.path.join(work, "missing", "folder"), refused.message)
         result = save(saved)
         self.assertTrue(result.success, result.message)
         self.assertGreater(result.keyframes, 1)
@@ -83,7 +84,7 @@ class KeyFrameMapTest(unittest.TestCase):
         rec.subscribe("/dslam_loaded/status", FrameStatus, "status")
         play_bag(bag, node="/dslam_loaded", options=["-s", "1.0"])  # frames 30-59
         states = [s.state for s in rec.messages("status")]
-        self.assertGreater(len(states), 0, "no status from the second node")
+        self.assertEqual(len(states), FRAMES // 2, "the second node's status per frame 30-59")
         localising = states.index(next(s for s in states if s != "localising"))
         rospy.loginfo("keyframe_map_check: states %s", states)
         self.assertLessEqual(localising, MAX_LOCALISING_FRAMES)
@@ -91,7 +92,7 @@ class KeyFrameMapTest(unittest.TestCase):
         path = os.path.join(work, "second.txt")
         result = rospy.ServiceProxy("/dslam_loaded/save_trajectory", SaveTrajectory)(path)
         self.assertTrue(result.success, result.message)
-        self.assertGreater(result.poses, FRAMES // 2 - MAX_LOCALISING_FRAMES - 5)
+        self.assertEqual(result.poses, len(states) - localising)  # every frame after it
         truth = {"%.6f" % row[0]: tum_matrix(row) for row in
                  np.loadtxt(os.path.join(folder, "groundtruth.txt"), comments="#", ndmin=2)}
         first_stamp = min(truth)
@@ -106,7 +107,8 @@ class KeyFrameMapTest(unittest.TestCase):
         extended = rospy.ServiceProxy("/dslam_loaded/save_keyframe_map", SaveKeyFrameMap)(
             os.path.join(work, "extended.kfm"))
         self.assertTrue(extended.success, extended.message)
-        self.assertGreaterEqual(extended.keyframes, saved_keyframes)
+        rospy.loginfo("keyframe_map_check: extended map %s", extended.message)
+        self.assertGreater(extended.keyframes, saved_keyframes)  # the new views were added
 
     def test_localisation_only_without_a_map_is_refused(self):
         run = subprocess.run(["rosrun", "dslam", "dslam_odometry_node", "__name:=only_no_map",

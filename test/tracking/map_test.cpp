@@ -37,6 +37,34 @@ TEST(Map, KeyFrameWindowAndLocalPoints) {
   EXPECT_EQ(map.LocalPoints({}).size(), 3u);
 }
 
+// The recently seen verified static points come from the points added or seen (MarkSeen), not a
+// walk over the map: a point not seen since the bound leaves the list, and comes back when seen.
+TEST(Map, LocalPointsFindVerifiedStaticPointsSeenSinceTheBound) {
+  Map map;
+  MapPoint verified;
+  verified.marked = true;
+  verified.candidate = false;
+  std::vector<PointId> ids;
+  for (int i = 0; i < 4; ++i) {
+    verified.last_seen_frame = 10 * i;  // 0, 10, 20, 30
+    ids.push_back(map.AddPoint(verified));
+  }
+  map.Find(ids[3])->candidate = true;  // not verified: never a recently seen static point
+  const auto sorted = [](std::vector<PointId> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  EXPECT_EQ(sorted(map.LocalPoints({}, 5)), (std::vector<PointId>{ids[1], ids[2]}));
+  EXPECT_EQ(sorted(map.LocalPoints({}, 15)), (std::vector<PointId>{ids[2]}));
+  map.MarkSeen(map.Find(ids[0]), 40);  // seen again after it left the list
+  EXPECT_EQ(map.Find(ids[0])->last_seen_frame, 40);
+  EXPECT_EQ(sorted(map.LocalPoints({}, 35)), (std::vector<PointId>{ids[0]}));
+  map.Erase(ids[0]);
+  EXPECT_TRUE(map.LocalPoints({}, 35).empty());
+  map.Clear();
+  EXPECT_TRUE(map.LocalPoints({}, 0).empty());
+}
+
 TEST(Map, CullRemovesStaleAndUnreliablePoints) {
   Map map;
   MapPoint stale;

@@ -15,6 +15,7 @@
 #include <map>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -202,6 +203,11 @@ class Map {
   /// Ids of the points observed by the keyframes in the window plus `extra`, plus verified static
   /// points (marked, not candidates) last seen at or after `static_seen_since_frame` (a negative
   /// value: none), without duplicates and without culled points: the local map tracking searches.
+  /// The recently seen ones come from a list of points added or seen (MarkSeen), not from a walk
+  /// over every point, so the cost does not grow with the map; `static_seen_since_frame` must not
+  /// decrease between calls on one map (it follows the frame index; Clear starts over).
+  /// Sets the point's last_seen_frame to `frame` (a frame index) and lists it for LocalPoints.
+  void MarkSeen(MapPoint* point, int frame);
   std::vector<PointId> LocalPoints(const std::vector<PointId>& extra,
                                    int static_seen_since_frame = -1) const;
 
@@ -269,6 +275,13 @@ class Map {
   void EraseArchived(int first_id, size_t max_keyframes);
 
   std::unordered_map<PointId, MapPoint> points_;
+  /// Every point added (AddPoint, FromContents) or seen (MarkSeen) since it was last dropped,
+  /// once: LocalPoints reads these instead of every point and drops those erased or last seen
+  /// before its static_seen_since_frame (so the list is as long as the recently seen part of the
+  /// map, whatever the map's size). Mutable: LocalPoints prunes it as it reads; the map's users
+  /// hold Slam's map lock, so no two threads call it at once.
+  mutable std::vector<PointId> recently_seen_;
+  mutable std::unordered_set<PointId> recently_seen_set_;
   std::deque<KeyFrame> keyframes_;
   std::map<int, KeyFrame> archive_;
   size_t recent_in_window_ = 0;
