@@ -1,5 +1,7 @@
 // OdometryNodelet's worker thread: input checks and conversion, resets, the odometry, the
 // recorded trajectory and publication (the nodelet's set-up and services: odometry_nodelet.cpp).
+#include <malloc.h>
+
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "dslam/ros/conversions.h"
@@ -31,6 +33,12 @@ LockHold OdometryNodelet::TakeLockHold() {
                  minute_hold_.where);
     minute_start_ = now;
     minute_hold_ = LockHold();
+    // Hands the heaps' free pages back to the kernel. KeepPerFrameBuffers keeps up to its trim
+    // threshold free in each glibc arena, and with an arena per thread (tracking, back end, loop
+    // closing, objects, ROS) fragmentation made the resident size creep while the heap stayed
+    // flat (heaptrack: heap 108-124 MB from minute 2 to 5 of the long run, VmRSS +1.6 MB a
+    // minute). Once a minute costs one page fault per page of the next frame's buffers.
+    malloc_trim(0);
   }
   return hold;
 }
