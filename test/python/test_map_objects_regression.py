@@ -8,10 +8,12 @@ import json
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 
-from test_run_dataset import find_tool
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # nose does not add it
+from test_run_dataset import find_tool  # noqa: E402
 
 FRAMES = 90
 
