@@ -43,9 +43,7 @@ void RefinedTrajectory::AddFrame(double stamp_s, const Eigen::Isometry3d& T_worl
   if (live_.size() > live_limit_) RetireErased(map);
   const Frame frame =
       Compact(stamp_s, reference.id, reference.T_world_camera.inverse() * T_world_camera);
-  const size_t blocks = frame_blocks_.size();
   Append(frame, kBlock, &open_frames_, &frame_blocks_);
-  full_frames_ += frame_blocks_.size() - blocks;
 }
 
 void RefinedTrajectory::UpdateKeyFrames(const Map& map) {

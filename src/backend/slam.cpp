@@ -1,6 +1,5 @@
 #include "dslam/backend/slam.h"
 
-#include <exception>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -68,11 +67,8 @@ FrameResult Slam::ProcessFrame(const RgbdFrame& frame, const FrameRequest& reque
   if (mode_ == BackEndMode::kThreaded) return result;
   // Back end (Sec. V): local mapping on the window the new keyframe completes.
   if (result.keyframe && config().backend.enabled) {
-    try {
-      result.backend = RunLocalMapping();
-    } catch (const std::exception& e) {
-      errors_->Report("back end", e.what());  // this frame's pose stands; the next is tracked
-    }
+    // An error drops the run's results; this frame's pose stands and the next is tracked.
+    errors_->Run("back end", [&] { result.backend = RunLocalMapping(); });
   }
   DeliverQueuedEvents(lock);
   return result;
@@ -121,13 +117,7 @@ void Slam::Deliver(const Delivery& delivery) const {
   // Each observer's call on its own: an exception is reported and the next observer goes on.
   const auto each = [this](const std::function<void(KeyFrameObserver&)>& call) {
     for (const auto& observer : observers_) {
-      try {
-        call(*observer);
-      } catch (const std::exception& e) {
-        errors_->Report(observer->name(), e.what());
-      } catch (...) {
-        errors_->Report(observer->name(), "unknown exception");
-      }
+      errors_->Run(observer->name(), [&] { call(*observer); });
     }
   };
   size_t begin = 0;
@@ -189,14 +179,17 @@ void Slam::BackEndLoop() {
     const bool run_job = pending_ > 0;
     pending_ = 0;  // one run for all of them: the window of the newest keyframe
     running_ = true;
-    try {
+    bool stopped = false;
+    // An error drops the run's results (and this round's events); tracking goes on.
+    errors_->Run("back end", [&] {
       if (run_job) {
         LocalMappingJob job(map(), generation_);
         lock.unlock();  // tracking goes on while the job works on its copy
         job.Run(config());
         lock.lock();
         work_.wait(lock, [this] { return stop_ || !results_held_; });  // HoldBackEndResults
-        if (stop_) return;  // the destructor: the results are dropped
+        stopped = stop_;  // the destructor: the results are dropped
+        if (stopped) return;
         if (job.generation() == generation_) completed_.push_back(FinishLocalMapping(job));
       }
       if (!observers_.empty()) {  // the new keyframes and the window as local mapping left it
@@ -205,10 +198,9 @@ void Slam::BackEndLoop() {
         Deliver(delivery);
         lock.lock();
       }
-    } catch (const std::exception& e) {  // the run's results are dropped; tracking goes on
-      if (!lock.owns_lock()) lock.lock();
-      errors_->Report("back end", e.what());
-    }
+    });
+    if (!lock.owns_lock()) lock.lock();
+    if (stopped) return;
     running_ = false;
     idle_.notify_all();
   }

@@ -1,5 +1,6 @@
 #include "dslam/core/error_log.h"
 
+#include <exception>
 #include <utility>
 
 namespace dslam {
@@ -11,6 +12,18 @@ void ErrorLog::Report(const std::string& where, const std::string& what) {
   ++count_;
   if (untaken_.size() >= max_kept_) untaken_.erase(untaken_.begin());
   untaken_.push_back({where, what});
+}
+
+bool ErrorLog::Run(const std::string& where, const std::function<void()>& work) {
+  try {
+    work();
+    return true;
+  } catch (const std::exception& e) {
+    Report(where, e.what());
+  } catch (...) {
+    Report(where, "unknown exception");
+  }
+  return false;
 }
 
 int64_t ErrorLog::count() const {

@@ -31,23 +31,13 @@ OrderedWorker::~OrderedWorker() {
 
 void OrderedWorker::Post(std::function<void()> task) {
   if (mode_ == WorkerMode::kSynchronous) {
-    RunTask(task);
+    errors_->Run(where_, task);
     return;
   }
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [this] { return static_cast<int>(queue_.size()) < max_pending_; });
   queue_.push_back(std::move(task));
   changed_.notify_all();
-}
-
-void OrderedWorker::RunTask(const std::function<void()>& task) {
-  try {
-    task();
-  } catch (const std::exception& e) {
-    errors_->Report(where_, e.what());
-  } catch (...) {
-    errors_->Report(where_, "unknown exception");
-  }
 }
 
 void OrderedWorker::Wait() {
@@ -71,7 +61,7 @@ void OrderedWorker::Run() {
     busy_ = true;
     changed_.notify_all();  // a slot is free for Post
     lock.unlock();
-    RunTask(task);
+    errors_->Run(where_, task);
     lock.lock();
     busy_ = false;
     changed_.notify_all();

@@ -178,19 +178,36 @@ TEST(KeyFrameObserver, ResetsArriveInOrderWithTheKeyFrames) {
   }
 }
 
+// The map after frames 0-14 and the correction made then: the newest keyframe moved 10 cm
+// along x.
+struct NewestCorrected {
+  Map before;
+  int newest = -1;
+  Eigen::Isometry3d moved;
+  bool corrected = false;  ///< CorrectKeyFrames accepted it
+};
+
+// Feeds frames 0-14 to `slam`, waits for its back end and corrects the newest keyframe
+// (CorrectKeyFrames, as loop closing does), without a frame after it.
+NewestCorrected CorrectNewestKeyFrame(Slam* slam) {
+  Fed run;
+  Feed(slam, 0, 15, FrameRequest{}, &run);
+  slam->WaitForBackEnd();
+  NewestCorrected out{slam->MapSnapshot()};
+  out.newest = out.before.keyframes().back().id;
+  out.moved = out.before.keyframes().back().T_world_camera;
+  out.moved.translation().x() += 0.1;
+  out.corrected = slam->CorrectKeyFrames({{out.newest, out.moved}});
+  return out;
+}
+
 TEST(KeyFrameObserver, ACorrectionArrivesAfterTheKeyFramesWithEveryCorrectedPose) {
   for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
     auto recorder = std::make_shared<Recorder>();
     Slam slam(WithBackEnd(false), mode, RefinedPoseRecording::kOn, {recorder});
-    Fed run;
-    Feed(&slam, 0, 15, FrameRequest{}, &run);
-    slam.WaitForBackEnd();
-    const Map map = slam.MapSnapshot();
+    const auto [map, newest, moved, corrected] = CorrectNewestKeyFrame(&slam);
+    ASSERT_TRUE(corrected);
     const size_t keyframes = map.num_keyframes();
-    const int newest = map.keyframes().back().id;
-    Eigen::Isometry3d moved = map.keyframes().back().T_world_camera;
-    moved.translation().x() += 0.1;
-    ASSERT_TRUE(slam.CorrectKeyFrames({{newest, moved}}));
     slam.WaitForBackEnd();  // delivers it
     ASSERT_FALSE(recorder->events.empty());
     EXPECT_EQ(recorder->events.back(), "c" + std::to_string(keyframes));
@@ -236,13 +253,9 @@ TEST(KeyFrameObserver, WaitForBackEndReturnsAfterACorrectionWithoutAFrame) {
   for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
     auto recorder = std::make_shared<Recorder>();
     Slam slam(WithBackEnd(true), mode, RefinedPoseRecording::kOn, {recorder});
-    Fed run;
-    Feed(&slam, 0, 15, FrameRequest{}, &run);
-    slam.WaitForBackEnd();
-    const Map map = slam.MapSnapshot();
-    Eigen::Isometry3d moved = map.keyframes().back().T_world_camera;
-    moved.translation().x() += 0.1;
-    ASSERT_TRUE(slam.CorrectKeyFrames({{map.keyframes().back().id, moved}}));
+    const NewestCorrected correction = CorrectNewestKeyFrame(&slam);
+    ASSERT_TRUE(correction.corrected);
+    const Map& map = correction.before;
     ReturnsWithin(20.0, [&] { slam.WaitForBackEnd(); });
     ASSERT_FALSE(recorder->events.empty());
     EXPECT_EQ(recorder->events.back(), "c" + std::to_string(map.num_keyframes()));

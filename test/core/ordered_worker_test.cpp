@@ -105,6 +105,21 @@ TEST(OrderedWorker, APostAfterAFailedTaskDoesNotThrow) {
   EXPECT_EQ(worker.errors().count(), 1);
 }
 
+TEST(ErrorLog, RunReportsAnyExceptionAndSaysWhetherTheWorkFinished) {
+  ErrorLog log;
+  int ran = 0;
+  EXPECT_TRUE(log.Run("a", [&] { ++ran; }));
+  EXPECT_FALSE(log.Run("b", [] { throw std::runtime_error("failed"); }));
+  EXPECT_FALSE(log.Run("c", [] { throw 42; }));  // not a std::exception
+  EXPECT_EQ(ran, 1);
+  const std::vector<ReportedError> taken = log.TakeNew();
+  ASSERT_EQ(taken.size(), 2u);
+  EXPECT_EQ(taken[0].where, "b");
+  EXPECT_EQ(taken[0].what, "failed");
+  EXPECT_EQ(taken[1].where, "c");
+  EXPECT_EQ(taken[1].what, "unknown exception");
+}
+
 TEST(ErrorLog, KeepsTheNewestMessagesAndCountsAll) {
   ErrorLog log(2);
   for (int i = 0; i < 5; ++i) log.Report("x", std::to_string(i));

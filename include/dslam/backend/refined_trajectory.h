@@ -60,7 +60,7 @@ class RefinedTrajectory {
   /// Take().Poses().
   Trajectory Poses() const { return Take().Poses(); }
   /// [-] frames recorded.
-  size_t size() const { return full_frames_ * kBlock + open_frames_.size(); }
+  size_t size() const { return frame_blocks_.size() * kBlock + open_frames_.size(); }
 
   static constexpr size_t kBlock = 4096;  ///< entries per full block
 
@@ -68,8 +68,7 @@ class RefinedTrajectory {
   /// Moves keyframes of live_ that `map` no longer has to the erased blocks.
   void RetireErased(const Map& map);
 
-  std::vector<std::shared_ptr<const std::vector<Frame>>> frame_blocks_;
-  size_t full_frames_ = 0;  ///< [blocks] in frame_blocks_
+  std::vector<std::shared_ptr<const std::vector<Frame>>> frame_blocks_;  ///< each kBlock frames
   std::vector<Frame> open_frames_;
   std::vector<std::shared_ptr<const std::vector<std::pair<int, Eigen::Isometry3d>>>> erased_;
   std::vector<std::pair<int, Eigen::Isometry3d>> open_erased_;

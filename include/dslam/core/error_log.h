@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ class ErrorLog {
 
   /// Counts an error of `where` and keeps its message for TakeNew.
   void Report(const std::string& where, const std::string& what);
+
+  /// Runs `work`; an exception it throws is reported as an error of `where` (its what(), or
+  /// "unknown exception") instead of leaving this call. Returns whether `work` finished.
+  bool Run(const std::string& where, const std::function<void()>& work);
 
   /// Errors reported since construction, taken or not.
   int64_t count() const;

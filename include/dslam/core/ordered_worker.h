@@ -60,8 +60,7 @@ class OrderedWorker {
   int Pending() const;
 
  private:
-  void Run();                                       ///< the worker thread's loop
-  void RunTask(const std::function<void()>& task);  ///< runs it, reporting its exception
+  void Run();  ///< the worker thread's loop
 
   const WorkerMode mode_;
   const int max_pending_;
