@@ -12,6 +12,7 @@ std::string StatusCsvHeader() {
   return "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
          "candidates,"
          "pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
+         "pose_observations,pose_chi2_per_dof,"
          "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,total_ms,"
          "tracking_ms,backlog,backend_delivered," +
          BackEndCsvHeader();
@@ -22,14 +23,15 @@ std::string StatusCsvRow(const FrameResult& r) {
   const StageTimes& t = r.times;
   char buffer[640];
   std::snprintf(buffer, sizeof(buffer),
-                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,"
+                "%d,%.6f,%s,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%.4f,"
                 "%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,",
                 r.frame_index, r.stamp_s, ToString(r.state), r.keyframe ? 1 : 0, c.features,
                 c.features_with_depth, c.tracked, c.static_points, c.dynamic_points,
                 c.candidate_points, c.pose_inliers, c.graph_points, c.graph_edges, c.culled_edges,
-                c.map_points, c.new_points, t.features_ms, t.matching_ms, t.initial_pose_ms,
-                t.static_points_ms, t.refine_ms, t.mapping_ms, t.total_ms, t.tracking_ms,
-                r.backend_thread.backlog, r.backend_thread.delivered ? 1 : 0);
+                c.map_points, c.new_points, c.pose_observations, c.pose_chi2_per_dof, t.features_ms,
+                t.matching_ms, t.initial_pose_ms, t.static_points_ms, t.refine_ms, t.mapping_ms,
+                t.total_ms, t.tracking_ms, r.backend_thread.backlog,
+                r.backend_thread.delivered ? 1 : 0);
   return buffer + BackEndCsvValues(r.backend);
 }
 

@@ -156,6 +156,8 @@ void FramePublisher::PublishStatus(const FrameResult& r, const std::string& stat
   s.static_points = c.static_points;
   s.dynamic_points = c.dynamic_points;
   s.pose_inliers = c.pose_inliers;
+  s.pose_observations = c.pose_observations;
+  s.pose_chi2_per_dof = c.pose_chi2_per_dof;
   s.graph_points = c.graph_points;
   s.graph_edges = c.graph_edges;
   s.culled_edges = c.culled_edges;

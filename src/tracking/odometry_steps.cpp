@@ -289,6 +289,8 @@ void Odometry::Summarise(const Current& current, FrameResult* result) const {
   counts.features_with_depth = current.features.NumWithDepth();
   counts.tracked = static_cast<int>(current.matches.size());
   counts.pose_inliers = current.pose.num_inliers;
+  counts.pose_observations = current.pose.num_observations;
+  counts.pose_chi2_per_dof = current.pose.inlier_chi2_per_dof;
   counts.map_points = static_cast<int>(map_.size());
   for (const PointMatch& match : current.matches) {
     const MapPoint* point = map_.Find(match.id);

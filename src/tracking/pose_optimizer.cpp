@@ -133,11 +133,18 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
       return result;
     }
   }
+  double chi2 = 0.0;
+  int dof = 0;
   for (size_t i = 0; i < observations.size(); ++i) {
     if (!result.inliers[i]) continue;
     AddInformation(observations[i], sqrt_information[i], result.T_camera_world, camera,
                    &result.information);
+    chi2 +=
+        WhitenedSquaredError(observations[i], sqrt_information[i], result.T_camera_world, camera);
+    dof += observations[i].has_depth ? 3 : 2;
   }
+  result.num_observations = static_cast<int>(observations.size());
+  result.inlier_chi2_per_dof = dof > 0 ? chi2 / dof : 0.0;
   return result;
 }
 

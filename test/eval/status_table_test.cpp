@@ -34,6 +34,7 @@ TEST(StatusTable, CsvColumnsKeepTheirNamesAndOrder) {
       StatusCsvHeader(),
       "frame,stamp,state,keyframe,features,features_with_depth,tracked,static,dynamic,"
       "candidates,pose_inliers,graph_points,graph_edges,culled_edges,map_points,new_points,"
+      "pose_observations,pose_chi2_per_dof,"
       "features_ms,matching_ms,initial_pose_ms,static_points_ms,refine_ms,mapping_ms,"
       "total_ms,tracking_ms,backlog,backend_delivered,window_keyframes,ba_points,"
       "ba_measurements,ba_outliers,ba_iterations,ba_chi2_per_dof,ba_inlier_chi2_per_dof,ba_ms,"

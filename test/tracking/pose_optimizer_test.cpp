@@ -52,6 +52,28 @@ TEST(PoseOptimizer, RecoversPoseAndFlagsOutliers) {
   EXPECT_GT(r.final_cost, 0.0);
 }
 
+// The fit of the model that the status reports (pose_chi2_per_dof, pose_observations): noise drawn
+// from the observations' own covariances gives the truncated chi-square mean, about 0.88 per dof
+// for 3 dof at the 95 % bound; a model three times too tight in every sigma gates most of them out.
+TEST(PoseOptimizer, ReportsTheFitOfTheMeasurementModel) {
+  const PinholeCamera camera = test::TestCamera();
+  const test::PoseScene scene = test::MakePoseScene(camera, 300, 0.0, 21);
+  const PoseResult fits =
+      EstimatePose(scene.observations, Perturb(scene.T_camera_world), camera, PoseConfig());
+  ASSERT_TRUE(fits.success);
+  EXPECT_EQ(fits.num_observations, 300);
+  EXPECT_GT(fits.inlier_chi2_per_dof, 0.75);
+  EXPECT_LT(fits.inlier_chi2_per_dof, 1.0);
+  EXPECT_LT(1.0 - static_cast<double>(fits.num_inliers) / fits.num_observations, 0.10);
+
+  std::vector<PoseObservation> too_tight = scene.observations;
+  for (PoseObservation& o : too_tight) o.covariance /= 9.0;
+  const PoseResult tight =
+      EstimatePose(too_tight, Perturb(scene.T_camera_world), camera, PoseConfig());
+  ASSERT_TRUE(tight.success);
+  EXPECT_GT(1.0 - static_cast<double>(tight.num_inliers) / tight.num_observations, 0.5);
+}
+
 TEST(PoseOptimizer, MixesPixelOnlyObservations) {
   const PinholeCamera camera = test::TestCamera();
   const test::PoseScene scene = test::MakePoseScene(camera, 200, 0.2, 12, 3);

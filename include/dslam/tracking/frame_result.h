@@ -53,6 +53,10 @@ struct FrameCounts {
   int dynamic_points = 0;       ///< matched and unmarked at the end of the frame
   int candidate_points = 0;     ///< of the static points: candidates not yet verified
   int pose_inliers = 0;         ///< inliers of the final pose estimate
+  int pose_observations = 0;    ///< observations of the final pose estimate (inliers and gated out)
+  /// [-] the final pose's mean whitened squared error per degree of freedom over its inliers
+  /// (PoseResult::inlier_chi2_per_dof)
+  double pose_chi2_per_dof = 0.0;
   int graph_points = 0;         ///< points in the front-end graph
   int graph_edges = 0;          ///< edges in the front-end graph
   int culled_edges = 0;         ///< inconsistent edges removed
