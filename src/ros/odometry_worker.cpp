@@ -26,21 +26,23 @@ void OdometryNodelet::WorkerLoop() {
 LockHold OdometryNodelet::TakeLockHold() {
   const LockHold hold = slam_->TakeLongestMapLockHold();
   if (hold.ms > minute_hold_.ms) minute_hold_ = hold;
+  return hold;
+}
+
+void OdometryNodelet::EveryMinute() {
   const ros::WallTime now = ros::WallTime::now();
   if (minute_start_.isZero()) minute_start_ = now;
-  if ((now - minute_start_).toSec() >= 60.0) {
-    NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", minute_hold_.ms,
-                 minute_hold_.where);
-    minute_start_ = now;
-    minute_hold_ = LockHold();
-    // Hands the heaps' free pages back to the kernel. KeepPerFrameBuffers keeps up to its trim
-    // threshold free in each glibc arena, and with an arena per thread (tracking, back end, loop
-    // closing, objects, ROS) fragmentation made the resident size creep while the heap stayed
-    // flat (heaptrack: heap 108-124 MB from minute 2 to 5 of the long run, VmRSS +1.6 MB a
-    // minute). Once a minute costs one page fault per page of the next frame's buffers.
-    malloc_trim(0);
-  }
-  return hold;
+  if ((now - minute_start_).toSec() < 60.0) return;
+  minute_start_ = now;
+  NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", minute_hold_.ms,
+               minute_hold_.where);
+  minute_hold_ = LockHold();
+  // Hands the heaps' free pages back to the kernel. KeepPerFrameBuffers keeps up to its trim
+  // threshold free in each glibc arena, and with an arena per thread (tracking, back end, loop
+  // closing, objects, ROS) fragmentation made the resident size creep while the heap stayed
+  // flat (heaptrack: heap 108-124 MB from minute 2 to 5 of the long run, VmRSS +1.6 MB a
+  // minute). Once a minute costs one page fault per page of the next frame's buffers.
+  malloc_trim(0);
 }
 
 void OdometryNodelet::LogBackgroundErrors() {
@@ -73,6 +75,7 @@ void OdometryNodelet::Process(const Input& input) {
   const bool was_localising = slam_->Localising();
   FrameResult result = slam_->ProcessFrame(frame, request);
   map_lock_max_ms_ = TakeLockHold().ms;
+  EveryMinute();
   keyframe_maps_->AfterFrame(result, was_localising);
   ++processed_;
   const bool new_world = result.reset;  // the odometry's own reset: time went backwards

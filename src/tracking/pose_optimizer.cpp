@@ -43,6 +43,29 @@ double WhitenedSquaredError(const PoseObservation& o, const Eigen::Matrix3d& S,
   return (S * (T_cw * o.p_world - o.y_camera)).squaredNorm();
 }
 
+// Re-classifies every observation by its squared Mahalanobis error at result->T_camera_world
+// (chi2_depth for 3 dof, chi2_pixel for 2 dof): inliers, num_inliers, num_observations and the
+// inliers' mean error per degree of freedom.
+void Classify(const std::vector<PoseObservation>& observations,
+              const std::vector<Eigen::Matrix3d>& sqrt_information, const PinholeCamera& camera,
+              const PoseConfig& config, PoseResult* result) {
+  double chi2_sum = 0.0;
+  int dof = 0;
+  result->num_inliers = 0;
+  for (size_t i = 0; i < observations.size(); ++i) {
+    const bool depth = observations[i].has_depth;
+    const double chi2 =
+        WhitenedSquaredError(observations[i], sqrt_information[i], result->T_camera_world, camera);
+    result->inliers[i] = chi2 < (depth ? config.chi2_depth : config.chi2_pixel);
+    if (!result->inliers[i]) continue;
+    ++result->num_inliers;
+    chi2_sum += chi2;
+    dof += depth ? 3 : 2;
+  }
+  result->num_observations = static_cast<int>(observations.size());
+  result->inlier_chi2_per_dof = dof > 0 ? chi2_sum / dof : 0.0;
+}
+
 Eigen::Isometry3d ToIsometry(const Eigen::Quaterniond& q, const Eigen::Vector3d& t) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = q.normalized().toRotationMatrix();
@@ -121,30 +144,17 @@ PoseResult EstimatePose(const std::vector<PoseObservation>& observations,
     if (!result.success) return result;
     q.normalize();
     result.T_camera_world = ToIsometry(q, t);
-    result.num_inliers = 0;
-    for (size_t i = 0; i < observations.size(); ++i) {
-      const double chi2 = observations[i].has_depth ? config.chi2_depth : config.chi2_pixel;
-      result.inliers[i] = WhitenedSquaredError(observations[i], sqrt_information[i],
-                                               result.T_camera_world, camera) < chi2;
-      result.num_inliers += result.inliers[i];
-    }
+    Classify(observations, sqrt_information, camera, config, &result);
     if (result.num_inliers < 3) {
       result.success = false;
       return result;
     }
   }
-  double chi2 = 0.0;
-  int dof = 0;
   for (size_t i = 0; i < observations.size(); ++i) {
     if (!result.inliers[i]) continue;
     AddInformation(observations[i], sqrt_information[i], result.T_camera_world, camera,
                    &result.information);
-    chi2 +=
-        WhitenedSquaredError(observations[i], sqrt_information[i], result.T_camera_world, camera);
-    dof += observations[i].has_depth ? 3 : 2;
   }
-  result.num_observations = static_cast<int>(observations.size());
-  result.inlier_chi2_per_dof = dof > 0 ? chi2 / dof : 0.0;
   return result;
 }
 

@@ -104,9 +104,12 @@ class OdometryNodelet : public nodelet::Nodelet {
   /// Logs each error of the work beside the frames (Slam's back end and observers, loop closing,
   /// the moving objects) once, with the part where it happened.
   void LogBackgroundErrors();
-  /// The longest hold of Slam's map lock since the previous call (Slam::TakeLongestMapLockHold);
-  /// once a minute, logs the longest of that minute and its holder.
+  /// The longest hold of Slam's map lock since the previous call (Slam::TakeLongestMapLockHold),
+  /// kept as the minute's longest when it is.
   LockHold TakeLockHold();
+  /// Once a minute of the worker's frames: logs the minute's longest map-lock hold and its holder,
+  /// and returns the heaps' free pages to the kernel (malloc_trim).
+  void EveryMinute();
   /// The camera mount T_base_camera: from TF if available at the first frame, else the default.
   const Eigen::Isometry3d& CameraMount(const std::string& camera_frame, const ros::Time& stamp);
   bool OnReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
@@ -153,7 +156,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   std::thread worker_;
   std::atomic<uint64_t> received_{0}, processed_{0}, rejected_{0};
   std::atomic<bool> reset_requested_{false};
-  // TakeLockHold's state; the worker's alone
+  // TakeLockHold's and EveryMinute's state; the worker's alone
   ros::WallTime minute_start_;
   LockHold minute_hold_;
   double map_lock_max_ms_ = 0.0;  // of the frame being published
