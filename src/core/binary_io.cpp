@@ -5,6 +5,7 @@
 #include "dslam/core/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -147,6 +148,37 @@ void KeepPrevious(const std::string& path, const std::string& who) {
   }
 }
 
+// Whether `name` is `prefix` + "<pid>-<n>" (TemporaryPath's form) of a process that no longer
+// exists (kill(pid, 0) fails with ESRCH; a process of another user answers EPERM and counts as
+// alive).
+bool IsTemporaryOfEndedProcess(const std::string& name, const std::string& prefix) {
+  if (name.rfind(prefix, 0) != 0) return false;
+  const std::string rest = name.substr(prefix.size());
+  const size_t dash = rest.find('-');
+  if (dash == 0 || dash == std::string::npos || dash + 1 == rest.size()) return false;
+  if (rest.find_first_not_of("0123456789") != dash) return false;
+  if (rest.find_first_not_of("0123456789", dash + 1) != std::string::npos) return false;
+  if (dash > 9) return false;  // beyond any pid
+  const pid_t pid = static_cast<pid_t>(std::stol(rest.substr(0, dash)));
+  return pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH;
+}
+
+// Removes the temporary files of `path` and of `path` + ".prev" that processes killed while
+// saving left behind (those of running processes stay: they may be saving now).
+void RemoveTemporariesOfEndedProcesses(const std::string& path) {
+  const std::filesystem::path file(path);
+  const std::string name = file.filename().string();
+  const std::string prefixes[2] = {name + ".tmp-", name + ".prev.tmp-"};
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(FolderOf(path), error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string entry = it->path().filename().string();
+    for (const std::string& prefix : prefixes) {
+      if (IsTemporaryOfEndedProcess(entry, prefix)) RemoveQuietly(it->path().string());
+    }
+  }
+}
+
 }  // namespace
 
 void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write,
@@ -160,6 +192,7 @@ void WriteFileAtomically(const std::string& path, const std::function<void(std::
     RemoveQuietly(temporary);
     throw;
   }
+  RemoveTemporariesOfEndedProcesses(path);
   const std::string folder = FolderOf(path);
   const int error = SyncPath(folder, true);
   if (error != 0 && error != EINVAL) {  // EINVAL: a file system that cannot sync folders

@@ -57,7 +57,7 @@ void KeyFrameMapOutput::Save(const Slam& slam, const PinholeCamera& camera) {
   const KeyFrameMapFile file =
       localisation_map_ ? *localisation_map_
                         : KeyFrameMapOf(slam, camera, vocabulary_->identity(), keeper_.get());
-  SaveKeyFrameMap(save_path_, file);
+  SaveKeyFrameMap(save_path_, file, PreviousFile::kKeep);  // as the node's save on exit
   keyframes_ = file.contents.keyframes.size();
   points_ = file.contents.points.size();
   images_ = file.images.size();

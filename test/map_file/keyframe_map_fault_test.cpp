@@ -1,7 +1,8 @@
-// The fault harness of the keyframe map file's save (issue 45, item 4): a child process saving a
-// keyframe map over a complete one is killed (SIGKILL) at a random moment of the save, 50 times;
-// after each kill the file at the path is the complete old file or the complete new one, byte for
-// byte, and loads. Own binary: the children are forked from a process without other threads.
+// The fault harness of the keyframe map file's save: a child process saving a keyframe map over a
+// complete one is killed (SIGKILL) at a random moment of the save, 50 times; after each kill the
+// file at the path is the complete old file or the complete new one, byte for byte, and loads;
+// the next save removes the temporary files the killed saves left. Own binary: the children are
+// forked from a process without other threads.
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,8 +11,10 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -68,16 +71,13 @@ double ChildSaveSeconds(const std::string& path, const KeyFrameMapFile& file) {
   return longest;
 }
 
-// Removes the temporary files killed saves left in `dir`; how many.
-int RemoveTemporaries(const std::filesystem::path& dir) {
-  int removed = 0;
+// The files in `dir` whose names start with `prefix`.
+int CountTemporaries(const std::filesystem::path& dir, const std::string& prefix = "map.bin.tmp-") {
+  int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().filename().string().rfind("map.bin.tmp-", 0) == 0) {
-      std::filesystem::remove(entry.path());
-      ++removed;
-    }
+    count += entry.path().filename().string().rfind(prefix, 0) == 0 ? 1 : 0;
   }
-  return removed;
+  return count;
 }
 
 TEST(KeyFrameMapFault, KilledSavesLeaveTheOldOrTheNewCompleteFile) {
@@ -102,7 +102,10 @@ TEST(KeyFrameMapFault, KilledSavesLeaveTheOldOrTheNewCompleteFile) {
     int status = 0;
     ASSERT_EQ(::waitpid(pid, &status, 0), pid);
     killed_during += WIFSIGNALED(status) ? 1 : 0;
-    if (WIFEXITED(status)) EXPECT_EQ(WEXITSTATUS(status), 0) << i;
+    if (WIFEXITED(status)) {
+      EXPECT_EQ(WEXITSTATUS(status), 0) << i;
+    }
+    left += CountTemporaries(dir, "map.bin.tmp-" + std::to_string(pid) + "-");
     const std::string now = ReadWholeFile(path, "test");
     ASSERT_TRUE(now == bytes[current] || now == bytes[next])
         << "kill " << i << ": " << now.size() << " bytes";
@@ -113,7 +116,6 @@ TEST(KeyFrameMapFault, KilledSavesLeaveTheOldOrTheNewCompleteFile) {
     } else {
       ++kept_old;
     }
-    left += RemoveTemporaries(dir);
   }
   std::printf(
       "save %.1f ms (%zu bytes); %d kills: %d during the save, %d after it; the file: %d times "
@@ -122,6 +124,42 @@ TEST(KeyFrameMapFault, KilledSavesLeaveTheOldOrTheNewCompleteFile) {
       wrote_new, left);
   EXPECT_GT(kept_old, 0);  // kills did fall inside saves (how many new files: timing-dependent)
   EXPECT_GT(killed_during, kKills / 3);
+  EXPECT_GT(left, 0);
+  SaveKeyFrameMap(path, files[0]);  // the next save removes what killed ones left
+  EXPECT_EQ(CountTemporaries(dir), 0);
+}
+
+// The pid of a process that has ended (a child that exited and was waited for).
+pid_t EndedPid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  ::waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+TEST(KeyFrameMapFault, ASaveRemovesOnlyTheTemporariesOfEndedProcesses) {
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "kfm_leftovers";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string ended = std::to_string(EndedPid());
+  const std::string alive = std::to_string(::getpid());
+  // Left: a running process's (it may be saving now), names of another form, another file's.
+  const std::vector<std::string> stay = {"map.bin.tmp-" + alive + "-77", "map.bin.tmp-" + ended,
+                                         "map.bin.tmp-x-1", "other.bin.tmp-" + ended + "-0"};
+  std::vector<std::string> names = {"map.bin.tmp-" + ended + "-0",
+                                    "map.bin.prev.tmp-" + ended + "-3"};
+  names.insert(names.end(), stay.begin(), stay.end());
+  for (const std::string& name : names) std::ofstream(dir / name) << "partial";
+  SaveKeyFrameMap((dir / "map.bin").string(), test::SampleMapFile(2, 1, false));
+  std::vector<std::string> now;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    now.push_back(entry.path().filename().string());
+  }
+  std::vector<std::string> expected = stay;
+  expected.push_back("map.bin");
+  std::sort(now.begin(), now.end());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(now, expected);
 }
 
 }  // namespace

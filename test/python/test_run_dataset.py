@@ -212,6 +212,25 @@ class RunDatasetCliTest(unittest.TestCase):
         self.assertEqual(usage.returncode, 2)
         self.assertIn("--localisation-only needs --load-keyframe-map", usage.stderr)
 
+    def test_saving_over_a_keyframe_map_keeps_it_as_prev(self):
+        """--save-keyframe-map over an existing file (here the map the run extends) keeps that
+        file as OUT.bin.prev, byte for byte; no temporary file is left."""
+        path = os.path.join(self.tmp, "prev_map.bin")
+        code, _, _, _ = self.run_tool("prev_first", "--save-keyframe-map", path)
+        self.assertEqual(code, 0)
+        with open(path, "rb") as handle:
+            first = handle.read()
+        self.assertFalse(os.path.exists(path + ".prev"))
+        code, summary, _, _ = self.run_tool("prev_second", "--load-keyframe-map", path,
+                                            "--save-keyframe-map", path)
+        self.assertEqual(code, 0)
+        self.assertTrue(summary["keyframe_map_loaded"])
+        with open(path + ".prev", "rb") as handle:
+            self.assertEqual(handle.read(), first)
+        with open(path, "rb") as handle:
+            self.assertNotEqual(handle.read(), first)  # the extended map
+        self.assertFalse([f for f in os.listdir(self.tmp) if ".tmp-" in f])
+
     def test_bad_rate_is_a_usage_error(self):
         for value in ["0", "-5", "fast"]:
             code, _, _, _ = self.run_tool("bad", "--rate", value)

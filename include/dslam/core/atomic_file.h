@@ -36,7 +36,8 @@ enum class PreviousFile {
 /// "<who>: cannot keep <path> as <path>.prev: <why>" or "<who>: cannot rename <temporary> to
 /// <path>: <why>" thrown, `path` unchanged; "<who>: wrote <path> but cannot sync its folder
 /// <folder>: <why>" after the rename. An exception of `write` is passed on after the temporary
-/// file is removed. A killed process leaves its temporary file behind.
+/// file is removed. A killed process leaves its temporary file behind; the next successful write
+/// to `path` removes those of processes that no longer exist.
 void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                          const std::string& who, PreviousFile previous = PreviousFile::kReplace);
 
