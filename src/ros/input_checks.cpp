@@ -23,8 +23,8 @@ StampVerdict StampCheck::Check(double stamp_s) {
   if (have_last_ && stamp_s < last_s_) {
     verdict.backwards = true;
     std::snprintf(text, sizeof(text),
-                  "time went backwards by %.3f s: the odometry starts a new run at the origin "
-                  "and the saved trajectory a new segment",
+                  "time went backwards by %.3f s: the odometry starts a new run (at the origin, "
+                  "or in the loaded keyframe map) and the saved trajectory a new segment",
                   last_s_ - stamp_s);
     verdict.problem = text;
   } else if (have_last_ && stamp_s - last_s_ > gap_warning_s_) {

@@ -66,12 +66,11 @@ const char* KeyFrameMapFiles::NoEffect() const {
 }
 
 void KeyFrameMapFiles::AfterFrame(const FrameResult& result, bool was_localising) {
-  if (!result.reset || !loaded_) return;
-  if (was_localising && !config_.localisation_only) {  // the timeout (none in localisation only)
+  // The odometry's own reset while localising in a loaded map is the localisation's timeout:
+  // time going backwards is reset before the frame (OdometryNodelet::ResetBeforeFrame).
+  if (result.reset && loaded_ && was_localising) {
     ROS_WARN("dslam: %s (keyframe map %s)", result.message.c_str(), config_.keyframe_map.c_str());
-    return;
   }
-  start_due_ = true;
 }
 
 void KeyFrameMapFiles::AfterReset() { start_due_ = loaded_ != nullptr; }

@@ -37,6 +37,12 @@ void OdometryNodelet::EveryMinute() {
   NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", minute_hold_.ms,
                minute_hold_.where);
   minute_hold_ = LockHold();
+  // What malloc holds, summed over its arenas: in use (live allocations), free in its heaps (not
+  // returned to the kernel) and mapped for single large allocations; before the trim below.
+  const struct mallinfo2 heap = mallinfo2();
+  constexpr double kMb = 1.0 / (1 << 20);
+  NODELET_INFO("dslam: heap: %.1f MB in use, %.1f MB free in malloc's heaps, %.1f MB mapped",
+               (heap.uordblks + heap.hblkhd) * kMb, heap.fordblks * kMb, heap.hblkhd * kMb);
   // Hands the heaps' free pages back to the kernel. KeepPerFrameBuffers keeps up to its trim
   // threshold free in each glibc arena, and with an arena per thread (tracking, back end, loop
   // closing, objects, ROS) fragmentation made the resident size creep while the heap stayed
@@ -58,7 +64,8 @@ void OdometryNodelet::LogBackgroundErrors() {
 
 void OdometryNodelet::Process(const Input& input) {
   RgbdFrame frame;
-  const std::string problem = ToFrame(input, &frame);
+  bool backwards = false;
+  const std::string problem = ToFrame(input, &frame, &backwards);
   if (!problem.empty()) {
     ++rejected_;
     NODELET_ERROR_THROTTLE(1.0, "dslam: bad input, frame skipped: %s", problem.c_str());
@@ -66,8 +73,7 @@ void OdometryNodelet::Process(const Input& input) {
     publisher_->PublishRejected(problem, input.colour->header, Counters(), latency_ms);
     return;
   }
-  const bool service_reset = ApplyRequestedReset();
-  if (service_reset) keyframe_maps_->AfterReset();
+  const PreFrameReset pre_reset = ResetBeforeFrame(backwards);
   keyframe_maps_->BeforeFrame(frame.camera);
   FrameRequest request;
   request.points = publisher_->WantsPoints() || objects_publisher_->Wanted();
@@ -78,7 +84,11 @@ void OdometryNodelet::Process(const Input& input) {
   EveryMinute();
   keyframe_maps_->AfterFrame(result, was_localising);
   ++processed_;
-  const bool new_world = result.reset;  // the odometry's own reset: time went backwards
+  if (pre_reset == PreFrameReset::kBackwardsInLoadedMap) {
+    result.reset = true;
+    result.message = "time went backwards: reset: localising in the loaded keyframe map";
+  }
+  const bool new_world = result.reset;  // time went backwards (the odometry's reset or ours)
   if (new_world) {
     NODELET_WARN(
         "dslam: odometry reset (%s): new run at the origin (odom and map -> odom restart at the "
@@ -86,7 +96,7 @@ void OdometryNodelet::Process(const Input& input) {
         result.message.c_str());
     publisher_->StartNewRun();
   }
-  if (service_reset) {
+  if (pre_reset == PreFrameReset::kService) {
     result.reset = true;
     result.message = keyframe_maps_->HasLoadedMap()
                          ? "reset by the reset service: localising in the loaded keyframe map"
@@ -99,9 +109,10 @@ void OdometryNodelet::Process(const Input& input) {
   Publish(input, frame, result);
 }
 
-std::string OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
+std::string OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame, bool* backwards) {
   const StampVerdict stamp = stamps_->Check(input.colour->header.stamp.toSec());
   if (!stamp.accept) return stamp.problem;
+  *backwards = stamp.backwards;
   if (!stamp.problem.empty()) NODELET_WARN("dslam: %s", stamp.problem.c_str());
   const std::string colour_id = NormaliseFrameId(input.colour->header.frame_id);
   const std::string depth_id = NormaliseFrameId(input.depth->header.frame_id);
@@ -132,13 +143,21 @@ std::string OdometryNodelet::ToFrame(const Input& input, RgbdFrame* frame) {
   return "";
 }
 
-bool OdometryNodelet::ApplyRequestedReset() {
-  if (!reset_requested_.exchange(false)) return false;
+OdometryNodelet::PreFrameReset OdometryNodelet::ResetBeforeFrame(bool backwards) {
+  const bool loaded_map = keyframe_maps_->HasLoadedMap();
+  if (backwards && loaded_map) {
+    reset_requested_.store(false);  // this reset serves a request as well
+    slam_->Reset(ResetMode::kNewWorld);
+    keyframe_maps_->AfterReset();
+    return PreFrameReset::kBackwardsInLoadedMap;
+  }
+  if (!reset_requested_.exchange(false)) return PreFrameReset::kNone;
   slam_->Reset(ResetMode::kKeepPose);
+  keyframe_maps_->AfterReset();
   NODELET_INFO("dslam: reset by the reset service: %s",
-               keyframe_maps_->HasLoadedMap() ? "localising in the loaded keyframe map"
-                                              : "re-initialising at the last pose");
-  return true;
+               loaded_map ? "localising in the loaded keyframe map"
+                          : "re-initialising at the last pose");
+  return PreFrameReset::kService;
 }
 
 void OdometryNodelet::RecordPose(const FrameResult& result, bool new_world) {

@@ -43,10 +43,10 @@ class KeyFrameMapFiles {
   /// Before Slam::ProcessFrame (worker thread): starts the Slam in the loaded map when due (the
   /// first frame, and the first after a reset), checked against `camera`, the frame's camera.
   void BeforeFrame(const std::shared_ptr<const PinholeCamera>& camera);
-  /// After Slam::ProcessFrame (worker thread): a reset of the odometry (time went backwards)
-  /// makes the next frame start in the loaded map again, unless the frame was still localising
-  /// without ~localisation_only (the reset is then the localisation's timeout, and mapping goes
-  /// on from scratch).
+  /// After Slam::ProcessFrame (worker thread): warns when the odometry reset itself while the
+  /// frame was localising in the loaded map (the localisation's timeout: mapping goes on from
+  /// scratch). Time going backwards never reaches the odometry with a map loaded: the node resets
+  /// before the frame and calls AfterReset.
   void AfterFrame(const FrameResult& result, bool was_localising);
   /// The reset service reset the odometry (worker thread): the next frame starts in the loaded
   /// map again.

@@ -93,9 +93,15 @@ class OdometryNodelet : public nodelet::Nodelet {
   void Process(const Input& input);
   /// Checks stamps and frame ids, converts the messages. Returns the problem when the set must be
   /// skipped (logged, counted, reported in `status`); warns about unusual but usable input.
-  std::string ToFrame(const Input& input, RgbdFrame* frame);
-  /// Resets the odometry when the service asked for it; returns whether it did.
-  bool ApplyRequestedReset();
+  /// `backwards`: the set is older than the previous one.
+  std::string ToFrame(const Input& input, RgbdFrame* frame, bool* backwards);
+  /// A reset made before a frame (ResetBeforeFrame).
+  enum class PreFrameReset { kNone, kService, kBackwardsInLoadedMap };
+  /// Resets the odometry before the frame when the reset service asked for it (kKeepPose) or when
+  /// time went `backwards` with a keyframe map loaded (kNewWorld; the odometry would otherwise
+  /// start a map of its own at this frame); either way the frame then starts in the loaded map.
+  /// Without a loaded map the odometry resets itself when time goes backwards.
+  PreFrameReset ResetBeforeFrame(bool backwards);
   /// Keeps the frame's pose for saving; `new_world`: the odometry started a new run at the
   /// origin (time went backwards), so the pose begins a new trajectory segment.
   void RecordPose(const FrameResult& result, bool new_world);
