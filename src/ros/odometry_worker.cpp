@@ -154,9 +154,9 @@ OdometryNodelet::PreFrameReset OdometryNodelet::ResetBeforeFrame(bool backwards)
   if (!reset_requested_.exchange(false)) return PreFrameReset::kNone;
   slam_->Reset(ResetMode::kKeepPose);
   keyframe_maps_->AfterReset();
-  NODELET_INFO("dslam: reset by the reset service: %s",
-               loaded_map ? "localising in the loaded keyframe map"
-                          : "re-initialising at the last pose");
+  NODELET_INFO(
+      "dslam: reset by the reset service: %s",
+      loaded_map ? "localising in the loaded keyframe map" : "re-initialising at the last pose");
   return PreFrameReset::kService;
 }
 
