@@ -33,6 +33,21 @@ Eigen::Isometry3d Expand(const RefinedTrajectory::Frame& frame) {
   return T;
 }
 
+RefinedTrajectory::ErasedKeyFrame CompactErased(int id, const Eigen::Isometry3d& T_world_keyframe) {
+  const Eigen::Quaterniond q(T_world_keyframe.rotation());
+  const Eigen::Vector3d& t = T_world_keyframe.translation();
+  return {id, {q.x(), q.y(), q.z(), q.w()}, {t.x(), t.y(), t.z()}};
+}
+
+Eigen::Isometry3d ExpandErased(const RefinedTrajectory::ErasedKeyFrame& keyframe) {
+  const double* q = keyframe.q_world_keyframe;
+  const double* t = keyframe.t_world_keyframe;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized().toRotationMatrix();
+  T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
+  return T;
+}
+
 }  // namespace
 
 void RefinedTrajectory::AddFrame(double stamp_s, const Eigen::Isometry3d& T_world_camera,
@@ -60,7 +75,7 @@ void RefinedTrajectory::RetireErased(const Map& map) {
       ++it;
       continue;
     }
-    Append(std::make_pair(it->first, it->second), kBlock, &open_erased_, &erased_);
+    Append(CompactErased(it->first, it->second), kBlock, &open_erased_, &erased_);
     it = live_.erase(it);
   }
   live_limit_ = 2 * live_.size() + 64;
@@ -71,8 +86,7 @@ RefinedTrajectory::Snapshot RefinedTrajectory::Take() const {
   snapshot.frames = frame_blocks_;
   snapshot.frames.push_back(std::make_shared<const std::vector<Frame>>(open_frames_));
   snapshot.erased = erased_;
-  snapshot.erased.push_back(
-      std::make_shared<const std::vector<std::pair<int, Eigen::Isometry3d>>>(open_erased_));
+  snapshot.erased.push_back(std::make_shared<const std::vector<ErasedKeyFrame>>(open_erased_));
   snapshot.live = live_;
   return snapshot;
 }
@@ -80,7 +94,11 @@ RefinedTrajectory::Snapshot RefinedTrajectory::Take() const {
 Trajectory RefinedTrajectory::Snapshot::Poses() const {
   std::unordered_map<int, Eigen::Isometry3d> T_world_keyframe = live;
   for (const auto& block : erased) {
-    for (const auto& [id, T] : *block) T_world_keyframe.emplace(id, T);  // live ones win
+    for (const ErasedKeyFrame& keyframe : *block) {  // live ones win
+      if (T_world_keyframe.count(keyframe.id) == 0) {
+        T_world_keyframe.emplace(keyframe.id, ExpandErased(keyframe));
+      }
+    }
   }
   Trajectory poses;
   for (const auto& block : frames) {

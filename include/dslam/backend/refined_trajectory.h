@@ -5,12 +5,13 @@
 // estimated at its frame) is what FrameResult reports; this one is for offline evaluation and
 // the node's save_refined_trajectory.
 //
-// Memory and copies over hours: a frame costs 40 bytes (T_keyframe_camera in single precision:
-// below 1e-7 m and 1e-7 rad for keyframe offsets under a metre, under the 1e-6 m the trajectory
-// files print). Frames and the poses of keyframes erased from the map are kept in full blocks that
-// are never written again and are shared by snapshots, so Take() copies a few pointers, the open
-// block and the poses of the keyframes still in the map, whatever the run's length: Slam takes it
-// under its map lock and computes the poses after releasing it.
+// Memory and copies over hours: a frame costs 40 bytes, a keyframe erased from the map 64
+// (T_keyframe_camera in single precision: below 1e-7 m and 1e-7 rad for keyframe offsets under a
+// metre, under the 1e-6 m the trajectory files print). Frames and the poses of keyframes erased
+// from the map are kept in full blocks that are never written again and are shared by snapshots, so
+// Take() copies a few pointers, the open block and the poses of the keyframes still in the map,
+// whatever the run's length: Slam takes it under its map lock and computes the poses after
+// releasing it.
 
 #include <cstdint>
 #include <memory>
@@ -36,11 +37,18 @@ class RefinedTrajectory {
     float t_keyframe_camera[3];
     float q_keyframe_camera[4];
   };
+  /// A keyframe erased from the map at its last pose T_world_keyframe [m] (translation, then
+  /// rotation as quaternion x, y, z, w): 64 bytes where an id and an Isometry3d take 136.
+  struct ErasedKeyFrame {
+    int32_t id;
+    double q_world_keyframe[4];
+    double t_world_keyframe[3];
+  };
   /// What Poses needs, copied cheaply (top of this file).
   struct Snapshot {
     std::vector<std::shared_ptr<const std::vector<Frame>>> frames;  ///< full blocks, then the open
     /// Keyframes erased from the map, at their last pose (full blocks, then the open one).
-    std::vector<std::shared_ptr<const std::vector<std::pair<int, Eigen::Isometry3d>>>> erased;
+    std::vector<std::shared_ptr<const std::vector<ErasedKeyFrame>>> erased;
     std::unordered_map<int, Eigen::Isometry3d> live;  ///< keyframes in the map [m]
     /// The frames with their refined poses, in the order they were added.
     Trajectory Poses() const;
@@ -70,8 +78,8 @@ class RefinedTrajectory {
 
   std::vector<std::shared_ptr<const std::vector<Frame>>> frame_blocks_;  ///< each kBlock frames
   std::vector<Frame> open_frames_;
-  std::vector<std::shared_ptr<const std::vector<std::pair<int, Eigen::Isometry3d>>>> erased_;
-  std::vector<std::pair<int, Eigen::Isometry3d>> open_erased_;
+  std::vector<std::shared_ptr<const std::vector<ErasedKeyFrame>>> erased_;
+  std::vector<ErasedKeyFrame> open_erased_;
   std::unordered_map<int, Eigen::Isometry3d> live_;
   size_t live_limit_ = 64;  ///< RetireErased runs when live_ grows past it
 };
