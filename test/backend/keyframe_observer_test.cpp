@@ -183,7 +183,7 @@ TEST(KeyFrameObserver, ResetsArriveInOrderWithTheKeyFrames) {
 struct NewestCorrected {
   Map before;
   int newest = -1;
-  Eigen::Isometry3d moved;
+  Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();
   bool corrected = false;  ///< CorrectKeyFrames accepted it
 };
 
