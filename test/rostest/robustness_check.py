@@ -50,7 +50,30 @@ class RobustnessTest(unittest.TestCase):
         self.check_missing_camera_info(seq, node)
         path_lengths = node.path_lengths()
         self.assertTrue(path_lengths and max(path_lengths) <= 5, path_lengths)
+        self.check_path(node, stamp)
         self.check_invalid_parameter()
+
+    def check_path(self, node, stamp):
+        """The newest path holds the newest base poses in `map` (map -> odom being the identity
+        here: the odom poses of the same stamps), oldest first, all from the run that began when
+        time went backwards (stamp[0] + 0.5)."""
+        # Arrival order: a stamp sent twice (frame 15's, again when time went backwards) keeps
+        # its newest pose.
+        odom = {o.header.stamp.to_nsec(): o.pose.pose for o in node.rec.messages("odom")}
+        path = node.rec.last("path")
+        self.assertEqual(path.header.frame_id, "map")
+        stamps = [p.header.stamp.to_nsec() for p in path.poses]
+        self.assertEqual(len(stamps), 5)
+        self.assertEqual(stamps, sorted(stamps))
+        self.assertEqual(stamps[-1], node.rec.last("odom").header.stamp.to_nsec())  # the newest
+        self.assertGreaterEqual(stamps[0] * 1e-9, stamp[0] + 0.5 - 1e-6)
+        for pose in path.poses:
+            expected = odom[pose.header.stamp.to_nsec()]
+            self.assertEqual(pose.header.frame_id, "map")
+            got = (pose.pose.position.x, pose.pose.position.y, pose.pose.position.z)
+            want = (expected.position.x, expected.position.y, expected.position.z)
+            for a, b in zip(got, want):
+                self.assertAlmostEqual(a, b, places=9)
 
     def check_skipped_sets(self, seq, node, stamp):
         zero = node.send(seq.messages(20, 0.0))
