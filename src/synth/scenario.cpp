@@ -115,6 +115,8 @@ Scenario RoomTour(const std::string& name, uint32_t seed) {
 
 std::vector<std::pair<std::string, std::string>> ScenarioNames() {
   return {{"static_room", "textured room, nothing moves, camera xyz"},
+          {"static_room_distorted",
+           "static room, camera rpy, lens with TUM fr1's distortion (k1 0.26, k2 -0.95)"},
           {"walking", "two walkers covering much of the view, camera xyz"},
           {"walking_static", "the two walkers of 'walking', static camera (mm jitter)"},
           {"walking_halfsphere", "the two walkers of 'walking', camera on a half sphere"},
@@ -129,6 +131,13 @@ std::vector<std::pair<std::string, std::string>> ScenarioNames() {
 
 Scenario MakeScenario(const std::string& name, uint32_t seed) {
   if (name == "static_room") return Base(name, seed, CameraMotionKind::kXyz);
+  if (name == "static_room_distorted") {
+    // Rotating, so that points cross the image and meet different parts of the lens.
+    Scenario s = Base(name, seed, CameraMotionKind::kRpy);
+    // The published calibration of TUM RGB-D's freiburg1 colour camera (plumb_bob).
+    s.sensor.distortion = {0.2624, -0.9531, -0.0054, 0.0026, 1.1633};
+    return s;
+  }
   if (name == "walking" || name == "walking_static" || name == "walking_halfsphere") {
     const CameraMotionKind motion = name == "walking"          ? CameraMotionKind::kXyz
                                     : name == "walking_static" ? CameraMotionKind::kStatic

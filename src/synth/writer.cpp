@@ -50,10 +50,19 @@ std::string FormatStamp(double stamp_s) {
 }
 
 void WriteCameraYaml(const std::string& path, const SensorParams& s) {
-  std::ofstream out = OpenText(path, "# dslam_synth camera: pinhole, no distortion\n");
+  const Distortion& d = s.distortion;
+  std::ofstream out = OpenText(path, d.IsZero() ? "# dslam_synth camera: pinhole, no distortion\n"
+                                                : "# dslam_synth camera: pinhole, plumb_bob\n");
+  const auto number = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.10g", value);
+    return value == 0.0 ? std::string("0.0") : std::string(text);
+  };
   out << "width: " << s.width << "\nheight: " << s.height << "\nfx: " << s.fx << "\nfy: " << s.fy
-      << "\ncx: " << s.cx << "\ncy: " << s.cy << "\nk1: 0.0\nk2: 0.0\np1: 0.0\np2: 0.0\nk3: 0.0"
-      << "\ndepth_scale: " << s.depth_scale << "\ngroundtruth_correction: none\n";
+      << "\ncx: " << s.cx << "\ncy: " << s.cy << "\nk1: " << number(d.k1)
+      << "\nk2: " << number(d.k2) << "\np1: " << number(d.p1) << "\np2: " << number(d.p2)
+      << "\nk3: " << number(d.k3) << "\ndepth_scale: " << s.depth_scale
+      << "\ngroundtruth_correction: none\n";
   if (!out) throw std::runtime_error("error while writing " + path);
 }
 

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "dslam/core/camera.h"
 #include "dslam/synth/actors.h"
 #include "dslam/synth/camera_motion.h"
 #include "dslam/synth/geometry.h"
@@ -36,6 +37,10 @@ struct SensorParams {
   double edge_jump_m = 0.1;                     ///< [m] depth jump to a 4-neighbour = an edge
   double edge_dropout_probability = 0.5;        ///< chance an edge pixel reads 0
   double colour_sigma = 2.0;                    ///< [grey levels] colour noise per channel
+  /// Lens distortion of the colour and depth images (plumb_bob, core/camera.h): the scene is
+  /// rendered through an ideal pinhole camera with a margin and warped into the distorted image
+  /// with OpenCV's cv::undistortPoints (independent of PinholeCamera::Distort/Undistort).
+  Distortion distortion;
 };
 
 /// Everything that defines a synthetic sequence.

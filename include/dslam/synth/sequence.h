@@ -38,7 +38,12 @@ class SyntheticSequence {
   explicit SyntheticSequence(Scenario scenario);
 
   const Scenario& scenario() const { return scenario_; }
+  /// The camera of the frames, with the sensor's distortion.
   const std::shared_ptr<const PinholeCamera>& camera() const { return camera_; }
+  /// The ideal pinhole camera the scene is rendered through: camera() itself without
+  /// distortion; with distortion, camera()'s focal lengths on an image larger by a margin that
+  /// covers every distorted pixel (its principal point moved by the margin).
+  const std::shared_ptr<const PinholeCamera>& render_camera() const { return render_camera_; }
 
   /// [s] stamp of frame `index`: start + index / fps, rounded to whole microseconds so it
   /// survives the "%.6f" text of rgb.txt and groundtruth.txt exactly.
@@ -59,8 +64,14 @@ class SyntheticSequence {
   SyntheticFrame RenderFrame(int index) const;
 
  private:
+  /// With distortion: the images of render_camera() warped into camera()'s (colour bilinear,
+  /// depth and mask nearest; beyond the rendered image: no depth, black, static).
+  void Distort(SyntheticFrame* frame) const;
+
   Scenario scenario_;
   std::shared_ptr<const PinholeCamera> camera_;
+  std::shared_ptr<const PinholeCamera> render_camera_;
+  cv::Mat map_u_, map_v_;  ///< CV_32FC1: per pixel of camera(), where it is in render_camera()'s
   SceneGeometry static_scene_;
 };
 

@@ -27,7 +27,7 @@ struct WriteSummary {
   double coverage_max = 0.0;
 };
 
-/// Writes camera.yaml for the sensor (no distortion, groundtruth_correction none).
+/// Writes camera.yaml for the sensor (its distortion, groundtruth_correction none).
 void WriteCameraYaml(const std::string& path, const SensorParams& sensor);
 
 /// Renders frames [0, frames) of `sequence` into `folder` (created if missing). `progress` is
