@@ -298,6 +298,11 @@ void Map::MoveKeyFramesAndPoints(
   ++corrections_;
 }
 
+void Map::ContinueIdsAfter(const Map& earlier) {
+  next_point_id_ = std::max(next_point_id_, earlier.next_point_id_);
+  next_keyframe_id_ = std::max(next_keyframe_id_, earlier.next_keyframe_id_);
+}
+
 void Map::Clear() {
   points_.clear();
   recently_seen_.clear();

@@ -34,6 +34,7 @@ void Odometry::StartInMap(Map map, std::shared_ptr<PlaceLookup> places, double t
                                 " is the largest int: the next frame's index would overflow");
   }
   Reset(ResetMode::kNewWorld);
+  map.ContinueIdsAfter(map_);  // ids unique for the life of the odometry, across starts
   map_ = std::move(map);
   localisation_only_ = use == LoadedMapUse::kLocalisationOnly;
   if (localisation_only_) map_.Freeze();

@@ -83,6 +83,38 @@ TEST(OdometryLocalisation, LocalisesAtTheNamedPlaceInTheLoadedWorld) {
   EXPECT_EQ(places->queries, 1);  // asked only while localising
 }
 
+// Keyframe and point ids stay unique for the life of an Odometry: starting in the loaded map
+// again (the node does after every reset) must not hand out the ids of keyframes and points made
+// in the loaded map since.
+TEST(OdometryLocalisation, StartingInTheLoadedMapAgainNeverReusesIds) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  const Map loaded = MapOfFirstFrames(10);
+  Odometry odometry{Config()};
+  const auto places = std::make_shared<FixedPlaces>(std::vector<int>{0});
+  odometry.StartInMap(Map::FromContents(loaded.Contents()), places, 5.0);
+  for (int i = 10; i < 22; ++i) ASSERT_TRUE(odometry.ProcessFrame(room.frames[i]).has_pose) << i;
+  const int next_keyframe = odometry.map().AllKeyFrames().back()->id + 1;
+  const PointId next_point = odometry.map().next_point_id();
+  ASSERT_GT(next_keyframe, loaded.AllKeyFrames().back()->id + 1);  // the run made keyframes
+  odometry.StartInMap(Map::FromContents(loaded.Contents()), places, 5.0);
+  const KeyFrame* made = nullptr;  // the first keyframe made after the second start
+  for (int i = 22; i < kFrames && made == nullptr; ++i) {
+    ASSERT_TRUE(odometry.ProcessFrame(room.frames[i]).has_pose) << i;
+    for (const KeyFrame* keyframe : odometry.map().AllKeyFrames()) {
+      if (keyframe->id > loaded.AllKeyFrames().back()->id) made = keyframe;
+    }
+  }
+  ASSERT_NE(made, nullptr) << "no keyframe made after the second start";
+  EXPECT_GE(made->id, next_keyframe);
+  int new_points = 0;
+  for (PointId id : made->points) {
+    if (id < loaded.next_point_id()) continue;  // a loaded point
+    ++new_points;
+    EXPECT_GE(id, next_point);
+  }
+  EXPECT_GT(new_points, 0);
+}
+
 TEST(OdometryLocalisation, WithoutAPlaceTheTimeoutStartsANewWorld) {
   const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
   Odometry odometry{Config()};

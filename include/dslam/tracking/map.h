@@ -249,6 +249,10 @@ class Map {
 
   /// The id the next AddPoint assigns: points with ids from here on are newer than this moment.
   PointId next_point_id() const { return next_point_id_; }
+  /// Raises the ids the next AddPoint and AddKeyFrame assign to at least those `earlier`'s would
+  /// assign, so that ids stay unique when this map replaces `earlier` (a loaded map started in
+  /// again after a reset).
+  void ContinueIdsAfter(const Map& earlier);
   size_t size() const { return points_.size(); }  ///< number of map points
   void Clear();  ///< removes every point and keyframe, and ends Freeze
 
