@@ -91,8 +91,8 @@ void OdometryNodelet::Process(const Input& input) {
   const bool new_world = result.reset;  // time went backwards (the odometry's reset or ours)
   if (new_world) {
     NODELET_WARN(
-        "dslam: odometry reset (%s): new run at the origin (odom and map -> odom restart at the "
-        "identity), new trajectory segment",
+        "dslam: odometry reset (%s): new run (odom and map -> odom restart at the identity), new "
+        "trajectory segment",
         result.message.c_str());
     publisher_->StartNewRun();
   }

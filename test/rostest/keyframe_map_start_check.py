@@ -8,7 +8,9 @@ with frames of a rendered static_room sequence:
 2. a node started in that map localises ("localising", then tracking in the map's world); the
    reset service and time going backwards start it in the loaded map again ("localising");
 3. a node whose camera differs from the map's refuses the map at its first frame, says why and
-   maps from scratch."""
+   maps from scratch;
+4. frames that cannot be localised until ~localise_timeout_s has passed: the next frame starts a
+   new map at the origin, with a warning."""
 
 import os
 import signal
@@ -34,9 +36,9 @@ T0 = 1000.0
 OLDER = b"the file that was at the exit path"
 
 
-def launch(work, ns, keyframe_map, on_exit=""):
-    """Starts dslam.launch in namespace `ns` (exact sync) with ~keyframe_map and
-    ~save_keyframe_map_on_exit; returns the roslaunch process."""
+def launch(work, ns, keyframe_map, on_exit="", timeout_s=10.0):
+    """Starts dslam.launch in namespace `ns` (exact sync) with ~keyframe_map,
+    ~save_keyframe_map_on_exit and ~localise_timeout_s; returns the roslaunch process."""
     path = os.path.join(work, ns + ".launch")
     with open(path, "w") as out:
         out.write("""<launch>
@@ -45,8 +47,9 @@ def launch(work, ns, keyframe_map, on_exit=""):
     <arg name="exact_sync" value="true"/> <arg name="keyframe_map" value="%s"/>
   </include>
   <param name="/%s/odometry/save_keyframe_map_on_exit" value="%s"/>
+  <param name="/%s/odometry/localise_timeout_s" value="%s"/>
 </launch>
-""" % (ns, ns, keyframe_map, ns, on_exit))
+""" % (ns, ns, keyframe_map, ns, on_exit, ns, timeout_s))
     return subprocess.Popen(["roslaunch", path])
 
 
@@ -74,9 +77,10 @@ class KeyFrameMapStartTest(unittest.TestCase):
         saved = self.check_refused_then_saved_on_exit(work, seq)
         self.check_reset_and_backwards_in_the_loaded_map(work, seq, saved)
         self.check_other_camera_refused(work, seq, saved)
+        self.check_localise_timeout(work, seq, saved)
 
-    def start(self, work, ns, keyframe_map, on_exit=""):
-        process = launch(work, ns, keyframe_map, on_exit)
+    def start(self, work, ns, keyframe_map, on_exit="", timeout_s=10.0):
+        process = launch(work, ns, keyframe_map, on_exit, timeout_s)
         node = Node("/" + ns)
         rospy.wait_for_service("/%s/save_trajectory" % ns, timeout=30.0)
         node.wait_connected()
@@ -158,6 +162,28 @@ class KeyFrameMapStartTest(unittest.TestCase):
             refusal = [log.msg for log in node.rec.messages("log") if text in log.msg][0]
             rospy.loginfo("keyframe_map_start_check: %s", refusal)
             self.assertIn("camera", refusal)
+        finally:
+            stop(process)
+
+    def check_localise_timeout(self, work, seq, saved):
+        """Frames that cannot be localised (black, no depth) until ~localise_timeout_s of stamps
+        has passed: the next frame starts a new map at the origin, with a warning."""
+        process, node = self.start(work, "dslam_timeout", saved, timeout_s=0.5)
+        try:
+            for i in range(3):
+                colour, depth, info = seq.messages(i, T0 + i / 30.0)
+                colour.data = bytes(len(colour.data))
+                depth.data = bytes(len(depth.data))
+                status = node.send([colour, depth, info])
+                self.assertIn(status.state, ("localising", "lost"), status.message)  # no features
+                self.assertFalse(status.has_pose)
+            late = node.send(seq.messages(20, T0 + 0.6))  # 0.6 s after the first frame
+            self.assertTrue(late.reset)
+            self.assertEqual(late.state, "initialised", late.message)
+            self.assertIn("not localised in the loaded keyframe map within", late.message)
+            self.assertTrue(late.has_pose)
+            self.assertTrue(node.wait_logged("not localised in the loaded keyframe map"))
+            self.assertEqual(node.send(seq.messages(21, T0 + 0.6 + 1 / 30.0)).state, "tracking")
         finally:
             stop(process)
 
