@@ -4,6 +4,7 @@
 
 #include <malloc.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -66,6 +67,8 @@ void OdometryNodelet::onInit() {
   Config config;
   try {
     LoadRosParams(pnh, &config, &config_);
+    transport_ = std::make_unique<image_transport::ImageTransport>(nh);
+    CheckTransports(*transport_);
     if (!config_.camera_yaml.empty()) yaml_camera_ = LoadCameraYaml(config_.camera_yaml).camera;
     recorder_ = std::make_unique<TrajectoryRecorder>(config_.trajectory_stream);
     std::vector<std::shared_ptr<KeyFrameObserver>> observers;
@@ -111,11 +114,25 @@ void OdometryNodelet::onInit() {
   WatchInputs(nh);
 }
 
+void OdometryNodelet::CheckTransports(const image_transport::ImageTransport& transport) const {
+  const std::vector<std::string> loadable = transport.getLoadableTransports();
+  std::string names;
+  for (const std::string& name : loadable) names += (names.empty() ? "" : ", ") + name;
+  for (const auto& [key, value] :
+       {std::make_pair("image_transport", config_.image_transport),
+        std::make_pair("depth_image_transport", config_.depth_image_transport)}) {
+    const std::string wanted = "image_transport/" + value;
+    if (std::find(loadable.begin(), loadable.end(), wanted) == loadable.end()) {
+      throw std::invalid_argument(std::string("~") + key + " '" + value +
+                                  "' has no plugin on this system (loadable: " + names + ")");
+    }
+  }
+}
+
 void OdometryNodelet::Subscribe(ros::NodeHandle& nh) {
   const int q = config_.queue_size;
   // As image_pipeline: the transport of each image by a parameter (read here from config_, which
   // LoadRosParams checked), e.g. compressed colour and compressedDepth depth.
-  transport_ = std::make_unique<image_transport::ImageTransport>(nh);
   colour_sub_ = std::make_unique<image_transport::SubscriberFilter>(
       *transport_, "rgb/image", q, image_transport::TransportHints(config_.image_transport));
   depth_sub_ = std::make_unique<image_transport::SubscriberFilter>(

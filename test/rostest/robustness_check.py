@@ -186,6 +186,13 @@ class RobustnessTest(unittest.TestCase):
                              timeout=60, universal_newlines=True)
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("queue_size", run.stdout)
+        # A transport without its plugin: refused at start naming the parameter (it crashed the
+        # node in the nodelet's destruction after image_transport threw).
+        run = subprocess.run(["rosrun", "dslam", "dslam_odometry_node", "__name:=bad_transport",
+                              "_image_transport:=no_such_transport"], stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, timeout=60, universal_newlines=True)
+        self.assertEqual(run.returncode, 1, run.stdout)
+        self.assertIn("~image_transport 'no_such_transport' has no plugin", run.stdout)
 
 
 if __name__ == "__main__":

@@ -85,6 +85,9 @@ class OdometryNodelet : public nodelet::Nodelet {
   /// std::runtime_error naming the parameter when one is invalid: the nodelet is then not
   /// loaded (`nodelet load` fails, dslam_odometry_node exits with status 1).
   void onInit() override;
+  /// Throws std::invalid_argument naming ~image_transport or ~depth_image_transport when
+  /// `transport` cannot load that transport's subscriber plugin (with the loadable ones).
+  void CheckTransports(const image_transport::ImageTransport& transport) const;
   void Subscribe(ros::NodeHandle& nh);
   void WatchInputs(ros::NodeHandle& nh);
   void OnImages(const sensor_msgs::ImageConstPtr& colour, const sensor_msgs::ImageConstPtr& depth,
