@@ -11,6 +11,7 @@
 #include <pluginlib/class_list_macros.hpp>
 
 #include "dslam/io/dataset_io.h"
+#include "dslam/io/private_folder.h"
 #include "dslam/io/trajectory_io.h"
 #include "dslam/loop_closing/loop_closing.h"
 #include "dslam/place_recognition/vocabulary.h"
@@ -70,7 +71,14 @@ void OdometryNodelet::onInit() {
     transport_ = std::make_unique<image_transport::ImageTransport>(nh);
     CheckTransports(*transport_);
     if (!config_.camera_yaml.empty()) yaml_camera_ = LoadCameraYaml(config_.camera_yaml).camera;
-    recorder_ = std::make_unique<TrajectoryRecorder>(config_.trajectory_stream);
+    // Without ~trajectory_stream the poses still go to a file, a private one removed at exit,
+    // so that memory stays flat however long the node runs.
+    std::string stream = config_.trajectory_stream;
+    if (stream.empty()) {
+      trajectory_folder_ = std::make_unique<PrivateFolder>("dslam-trajectory-");
+      stream = trajectory_folder_->path() + "/trajectory.txt";
+    }
+    recorder_ = std::make_unique<TrajectoryRecorder>(stream);
     std::vector<std::shared_ptr<KeyFrameObserver>> observers;
     if (config.map.enabled) observers.push_back(mapper_ = std::make_shared<StaticMapper>(config));
     // Loop closing and keyframe map files (their places and identity) share the vocabulary.

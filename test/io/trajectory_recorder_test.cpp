@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dslam/io/private_folder.h"
 #include "dslam/io/trajectory_io.h"
 
 namespace dslam {
@@ -122,6 +123,33 @@ TEST_F(TrajectoryRecorderTest, UnwritablePathsAreNamedErrors) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("missing/t.txt"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace dslam
+
+namespace dslam {
+namespace {
+
+TEST(PrivateFolder, IsMadeUnderTheTemporaryFolderAndRemovedWithItsFiles) {
+  std::string path;
+  {
+    const PrivateFolder a("dslam-test-");
+    const PrivateFolder b("dslam-test-");
+    path = a.path();
+    EXPECT_NE(a.path(), b.path());
+    EXPECT_TRUE(std::filesystem::is_directory(path));
+    EXPECT_EQ(std::filesystem::path(path).filename().string().rfind("dslam-test-", 0), 0u);
+    EXPECT_EQ(std::filesystem::status(path).permissions() & std::filesystem::perms::all,
+              std::filesystem::perms::owner_all);
+    // A streaming recorder inside it, as the node's default.
+    TrajectoryRecorder recorder(path + "/trajectory.txt");
+    recorder.Add({1.0, Eigen::Isometry3d::Identity()});
+    recorder.StartSegment();
+    recorder.Add({0.5, Eigen::Isometry3d::Identity()});
+    EXPECT_TRUE(std::filesystem::exists(path + "/trajectory.seg1.txt"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 }  // namespace

@@ -76,7 +76,8 @@ struct NodeConfig {
     v(Field("trajectory_stream", "-", 0, 0,
             "file to which every tracked pose is appended (and flushed) as it goes (TUM format), "
             "keeping none in memory; earlier segments are renamed to <stem>.seg<N><ext> beside "
-            "it, and save_trajectory copies these files; empty: poses kept in memory. Relative "
+            "it, and save_trajectory copies these files; empty: the same in a private folder under "
+            "$TMPDIR (else /tmp), removed at exit, so that memory stays flat. Relative "
             "paths are relative to the node's working directory (ROS_HOME under roslaunch)"),
       s.trajectory_stream);
     v(Field("image_transport", "-", 0, 0,

@@ -45,6 +45,7 @@
 #include "dslam/SaveTrajectory.h"
 #include "dslam/backend/slam.h"
 #include "dslam/core/camera.h"
+#include "dslam/io/private_folder.h"
 #include "dslam/io/trajectory_recorder.h"
 #include "dslam/ros/frame_publisher.h"
 #include "dslam/ros/input_checks.h"
@@ -171,6 +172,9 @@ class OdometryNodelet : public nodelet::Nodelet {
   double map_lock_max_ms_ = 0.0;  // of the frame being published
 
   std::mutex trajectory_mutex_;
+  /// Holds the recorder's files when ~trajectory_stream is empty (declared before recorder_,
+  /// so that it is removed after the recorder closed them).
+  std::unique_ptr<PrivateFolder> trajectory_folder_;
   std::unique_ptr<TrajectoryRecorder> recorder_;  // every tracked pose, guarded
   /// [s] stamp of the current segment's first tracked frame (none yet: empty), guarded
   std::optional<double> segment_first_stamp_s_;
