@@ -84,7 +84,12 @@ class KeyFrameMapTest(unittest.TestCase):
         rec.subscribe("/dslam_loaded/status", FrameStatus, "status")
         play_bag(bag, node="/dslam_loaded", options=["-s", "1.0"])  # frames 30-59
         states = [s.state for s in rec.messages("status")]
-        self.assertEqual(len(states), FRAMES // 2, "the second node's status per frame 30-59")
+        # Every set of frames 30-59 is processed or, while the worker is busy (the first frame
+        # starts the loaded map and relocalises), dropped and counted: exact either way.
+        dropped = rec.messages("status")[-1].frames_dropped
+        self.assertEqual(len(states) + dropped, FRAMES // 2,
+                         "the second node's status per frame 30-59")
+        self.assertLessEqual(dropped, 2)
         localising = states.index(next(s for s in states if s != "localising"))
         rospy.loginfo("keyframe_map_check: states %s", states)
         self.assertLessEqual(localising, MAX_LOCALISING_FRAMES)
