@@ -13,39 +13,35 @@ void Append(T entry, size_t block, std::vector<T>* open, Blocks* blocks) {
   open->reserve(block);
 }
 
-RefinedTrajectory::Frame Compact(double stamp_s, int keyframe_id,
-                                 const Eigen::Isometry3d& T_keyframe_camera) {
-  const Eigen::Vector3d& t = T_keyframe_camera.translation();
-  const Eigen::Quaterniond q(T_keyframe_camera.rotation());
-  return {stamp_s,
-          keyframe_id,
-          {static_cast<float>(t.x()), static_cast<float>(t.y()), static_cast<float>(t.z())},
-          {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()),
-           static_cast<float>(q.w())}};
+/// Writes `T` as quaternion (x, y, z, w) and translation in the precision of T_scalar.
+template <typename T_scalar>
+void Pack(const Eigen::Isometry3d& T, T_scalar q_out[4], T_scalar t_out[3]) {
+  const Eigen::Quaterniond q(T.rotation());
+  const Eigen::Vector4d q_xyzw(q.x(), q.y(), q.z(), q.w());
+  for (int i = 0; i < 4; ++i) q_out[i] = static_cast<T_scalar>(q_xyzw[i]);
+  for (int i = 0; i < 3; ++i) t_out[i] = static_cast<T_scalar>(T.translation()[i]);
 }
 
-Eigen::Isometry3d Expand(const RefinedTrajectory::Frame& frame) {
-  const float* q = frame.q_keyframe_camera;
-  const float* t = frame.t_keyframe_camera;
+/// The pose Pack wrote (the quaternion normalised).
+template <typename T_scalar>
+Eigen::Isometry3d Unpack(const T_scalar q[4], const T_scalar t[3]) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized().toRotationMatrix();
   T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
   return T;
+}
+
+RefinedTrajectory::Frame Compact(double stamp_s, int keyframe_id,
+                                 const Eigen::Isometry3d& T_keyframe_camera) {
+  RefinedTrajectory::Frame frame{stamp_s, keyframe_id, {}, {}};
+  Pack(T_keyframe_camera, frame.q_keyframe_camera, frame.t_keyframe_camera);
+  return frame;
 }
 
 RefinedTrajectory::ErasedKeyFrame CompactErased(int id, const Eigen::Isometry3d& T_world_keyframe) {
-  const Eigen::Quaterniond q(T_world_keyframe.rotation());
-  const Eigen::Vector3d& t = T_world_keyframe.translation();
-  return {id, {q.x(), q.y(), q.z(), q.w()}, {t.x(), t.y(), t.z()}};
-}
-
-Eigen::Isometry3d ExpandErased(const RefinedTrajectory::ErasedKeyFrame& keyframe) {
-  const double* q = keyframe.q_world_keyframe;
-  const double* t = keyframe.t_world_keyframe;
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized().toRotationMatrix();
-  T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
-  return T;
+  RefinedTrajectory::ErasedKeyFrame keyframe{id, {}, {}};
+  Pack(T_world_keyframe, keyframe.q_world_keyframe, keyframe.t_world_keyframe);
+  return keyframe;
 }
 
 }  // namespace
@@ -96,14 +92,17 @@ Trajectory RefinedTrajectory::Snapshot::Poses() const {
   for (const auto& block : erased) {
     for (const ErasedKeyFrame& keyframe : *block) {  // live ones win
       if (T_world_keyframe.count(keyframe.id) == 0) {
-        T_world_keyframe.emplace(keyframe.id, ExpandErased(keyframe));
+        T_world_keyframe.emplace(keyframe.id,
+                                 Unpack(keyframe.q_world_keyframe, keyframe.t_world_keyframe));
       }
     }
   }
   Trajectory poses;
   for (const auto& block : frames) {
     for (const Frame& frame : *block) {
-      poses.push_back({frame.stamp_s, T_world_keyframe.at(frame.keyframe_id) * Expand(frame)});
+      poses.push_back(
+          {frame.stamp_s, T_world_keyframe.at(frame.keyframe_id) *
+                              Unpack(frame.q_keyframe_camera, frame.t_keyframe_camera)});
     }
   }
   return poses;
