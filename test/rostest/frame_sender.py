@@ -1,7 +1,10 @@
 """Hand-made input sets for the dslam nodelet, one at a time: a rendered sequence as ready
-messages and a node handle that publishes a set and waits for its status message (the rostests
-robustness_check.py and keyframe_map_start_check.py)."""
+messages and a node handle that publishes a set and waits for its status message; nodes started
+from dslam.launch with arguments and parameters of a test's own (the rostests robustness_check.py,
+keyframe_map_start_check.py and frames_check.py)."""
 import os
+import signal
+import subprocess
 import sys
 import time
 
@@ -90,3 +93,42 @@ class Node:
         while time.time() < deadline and not self.logged(text):
             time.sleep(0.05)
         return self.logged(text)
+
+
+def launch_node(work, ns, args=None, params=None):
+    """Starts dslam.launch in namespace `ns` with exact sync, the launch arguments `args` and the
+    node parameters `params` (name -> value; set after the launch file's own), through a launch
+    file written into the folder `work`; returns the roslaunch process."""
+    path = os.path.join(work, ns + ".launch")
+    arg_lines = ['    <arg name="%s" value="%s"/>' % item for item in (args or {}).items()]
+    param_lines = ['  <param name="/%s/odometry/%s" value="%s"/>' % (ns, key, value)
+                   for key, value in (params or {}).items()]
+    with open(path, "w") as out:
+        out.write("""<launch>
+  <include file="$(find dslam)/launch/dslam.launch">
+    <arg name="ns" value="%s"/> <arg name="manager" value="%s_manager"/>
+    <arg name="exact_sync" value="true"/>
+%s
+  </include>
+%s
+</launch>
+""" % (ns, ns, "\n".join(arg_lines), "\n".join(param_lines)))
+    return subprocess.Popen(["roslaunch", path])
+
+
+def start_node(work, ns, args=None, params=None, topics=()):
+    """launch_node, and a Node on it that also records `topics` ((topic, class, name), ...);
+    returns (process, node) once the node's services are up and its inputs connected."""
+    process = launch_node(work, ns, args, params)
+    node = Node("/" + ns)
+    for topic, kind, name in topics:
+        node.rec.subscribe(topic, kind, name, queue_size=100)
+    rospy.wait_for_service("/%s/save_trajectory" % ns, timeout=30.0)
+    node.wait_connected()
+    return process, node
+
+
+def stop(process):
+    """Stops a roslaunch process as Ctrl-C would and waits for it."""
+    process.send_signal(signal.SIGINT)
+    process.wait(timeout=60)

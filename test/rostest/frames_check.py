@@ -12,8 +12,6 @@ feeds frame by frame with a rendered static_room sequence (colour frame id `cam`
    saved camera poses through that mount."""
 
 import os
-import signal
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -33,35 +31,13 @@ from dslam.srv import SaveTrajectory
 
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 import test_scenes  # noqa: E402 (beside this file)
-from frame_sender import Node, Sequence  # noqa: E402 (beside this file)
+from frame_sender import Sequence, start_node, stop  # noqa: E402 (beside this file)
 from rostest_helpers import matrix, tum_matrix  # noqa: E402 (beside this file)
 
 FRAMES = 60
 T0 = 1000.0
 # base <- optical of the default mount: optical x = base -y, y = base -z, z = base x.
 R_BASE_OPTICAL = np.array([[0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]])
-
-
-def launch(work, ns, params):
-    """Starts dslam.launch in namespace `ns` (exact sync) with the node parameters `params`
-    (name -> value) set after its own; returns the roslaunch process."""
-    path = os.path.join(work, ns + ".launch")
-    lines = ['  <param name="/%s/odometry/%s" value="%s"/>' % (ns, k, v) for k, v in params.items()]
-    with open(path, "w") as out:
-        out.write("""<launch>
-  <include file="$(find dslam)/launch/dslam.launch">
-    <arg name="ns" value="%s"/> <arg name="manager" value="%s_manager"/>
-    <arg name="exact_sync" value="true"/>
-  </include>
-%s
-</launch>
-""" % (ns, ns, "\n".join(lines)))
-    return subprocess.Popen(["roslaunch", path])
-
-
-def stop(process):
-    process.send_signal(signal.SIGINT)
-    process.wait(timeout=60)
 
 
 def transforms(rec, name, parent, child):
@@ -80,14 +56,9 @@ class FramesTest(unittest.TestCase):
         self.check_mount_from_tf_and_no_tf(work, seq)
 
     def start(self, work, ns, params):
-        process = launch(work, ns, params)
-        node = Node("/" + ns)
-        node.rec.subscribe("/tf_static", TFMessage, "tf_static", queue_size=100)
-        node.rec.subscribe("/%s/features" % ns, Image, "features")
-        node.rec.subscribe("/%s/keyframe_path" % ns, Path, "keyframe_path")
-        rospy.wait_for_service("/%s/save_trajectory" % ns, timeout=30.0)
-        node.wait_connected()
-        return process, node
+        return start_node(work, ns, params=params, topics=[
+            ("/tf_static", TFMessage, "tf_static"), ("/%s/features" % ns, Image, "features"),
+            ("/%s/keyframe_path" % ns, Path, "keyframe_path")])
 
     def check_defaults(self, work, seq):
         process, node = self.start(work, "dslam_defaults", {})

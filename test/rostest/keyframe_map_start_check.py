@@ -13,9 +13,7 @@ with frames of a rendered static_room sequence:
    new map at the origin, with a warning."""
 
 import os
-import signal
 import struct
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -29,33 +27,11 @@ from dslam.srv import SaveKeyFrameMap
 
 sys.path.insert(0, os.path.join(rospkg.RosPack().get_path("dslam"), "scripts"))
 import test_scenes  # noqa: E402 (beside this file)
-from frame_sender import Node, Sequence  # noqa: E402 (beside this file)
+from frame_sender import Sequence, start_node, stop  # noqa: E402 (beside this file)
 
 FRAMES = 60
 T0 = 1000.0
 OLDER = b"the file that was at the exit path"
-
-
-def launch(work, ns, keyframe_map, on_exit="", timeout_s=10.0):
-    """Starts dslam.launch in namespace `ns` (exact sync) with ~keyframe_map,
-    ~save_keyframe_map_on_exit and ~localise_timeout_s; returns the roslaunch process."""
-    path = os.path.join(work, ns + ".launch")
-    with open(path, "w") as out:
-        out.write("""<launch>
-  <include file="$(find dslam)/launch/dslam.launch">
-    <arg name="ns" value="%s"/> <arg name="manager" value="%s_manager"/>
-    <arg name="exact_sync" value="true"/> <arg name="keyframe_map" value="%s"/>
-  </include>
-  <param name="/%s/odometry/save_keyframe_map_on_exit" value="%s"/>
-  <param name="/%s/odometry/localise_timeout_s" value="%s"/>
-</launch>
-""" % (ns, ns, keyframe_map, ns, on_exit, ns, timeout_s))
-    return subprocess.Popen(["roslaunch", path])
-
-
-def stop(process):
-    process.send_signal(signal.SIGINT)
-    process.wait(timeout=60)
 
 
 def header(path):
@@ -80,11 +56,8 @@ class KeyFrameMapStartTest(unittest.TestCase):
         self.check_localise_timeout(work, seq, saved)
 
     def start(self, work, ns, keyframe_map, on_exit="", timeout_s=10.0):
-        process = launch(work, ns, keyframe_map, on_exit, timeout_s)
-        node = Node("/" + ns)
-        rospy.wait_for_service("/%s/save_trajectory" % ns, timeout=30.0)
-        node.wait_connected()
-        return process, node
+        return start_node(work, ns, {"keyframe_map": keyframe_map},
+                          {"save_keyframe_map_on_exit": on_exit, "localise_timeout_s": timeout_s})
 
     def check_refused_then_saved_on_exit(self, work, seq):
         corrupt = os.path.join(work, "corrupt.kfm")
