@@ -53,7 +53,9 @@ namespace {
 /// Measured on the Bonn segment at 30 Hz (2-core VM): the conversions took 5.0 + 8.9 ms per
 /// frame (median) with the defaults and 0.23 + 0.39 ms with these settings (receive-to-publish
 /// latency median 28.1 -> 13.2 ms, BENCHMARKS.md "ROS node"); the free memory kept at the top of
-/// each heap is bounded by the trim threshold.
+/// each heap is bounded by the trim threshold. glibc's malloc only: under jemalloc mallopt
+/// changes nothing, and jemalloc keeps freed pages for reuse and returns them after its decay
+/// time by itself.
 void KeepPerFrameBuffers() {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // the largest glibc accepts on 64-bit
   mallopt(M_TRIM_THRESHOLD, 64 << 20);

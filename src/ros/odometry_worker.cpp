@@ -1,10 +1,9 @@
 // OdometryNodelet's worker thread: input checks and conversion, resets, the odometry, the
 // recorded trajectory and publication (the nodelet's set-up and services: odometry_nodelet.cpp).
-#include <malloc.h>
-
 #include <tf2_eigen/tf2_eigen.h>
 
 #include "dslam/ros/conversions.h"
+#include "dslam/ros/heap_report.h"
 #include "dslam/ros/keyframe_map_files.h"
 #include "dslam/ros/odometry_nodelet.h"
 
@@ -37,18 +36,13 @@ void OdometryNodelet::EveryMinute() {
   NODELET_INFO("dslam: longest map-lock hold in the last minute: %.2f ms (%s)", minute_hold_.ms,
                minute_hold_.where);
   minute_hold_ = LockHold();
-  // What malloc holds, summed over its arenas: in use (live allocations), free in its heaps (not
-  // returned to the kernel) and mapped for single large allocations; before the trim below.
-  const struct mallinfo2 heap = mallinfo2();
-  constexpr double kMb = 1.0 / (1 << 20);
-  NODELET_INFO("dslam: heap: %.1f MB in use, %.1f MB free in malloc's heaps, %.1f MB mapped",
-               (heap.uordblks + heap.hblkhd) * kMb, heap.fordblks * kMb, heap.hblkhd * kMb);
-  // Hands the heaps' free pages back to the kernel. KeepPerFrameBuffers keeps up to its trim
-  // threshold free in each glibc arena, and with an arena per thread (tracking, back end, loop
-  // closing, objects, ROS) fragmentation made the resident size creep while the heap stayed
-  // flat (heaptrack: heap 108-124 MB from minute 2 to 5 of the long run, VmRSS +1.6 MB a
-  // minute). Once a minute costs one page fault per page of the next frame's buffers.
-  malloc_trim(0);
+  NODELET_INFO("dslam: %s", HeapReport().c_str());
+  // With glibc's malloc (a nodelet manager started without jemalloc) the free pages go back to
+  // the kernel here: KeepPerFrameBuffers keeps up to its trim threshold free in each arena, and
+  // with an arena per thread the resident size crept while the heap stayed flat (heaptrack: heap
+  // 108-124 MB from minute 2 to 5 of the long run, VmRSS +1.6 MB a minute). Under jemalloc
+  // (dslam_odometry_node, dslam.launch's manager) this does nothing.
+  ReleaseFreeHeapMemory();
 }
 
 void OdometryNodelet::LogBackgroundErrors() {

@@ -117,8 +117,9 @@ class OdometryNodelet : public nodelet::Nodelet {
   /// The longest hold of Slam's map lock since the previous call (Slam::TakeLongestMapLockHold),
   /// kept as the minute's longest when it is.
   LockHold TakeLockHold();
-  /// Once a minute of the worker's frames: logs the minute's longest map-lock hold and its holder,
-  /// and returns the heaps' free pages to the kernel (malloc_trim).
+  /// Once a minute of the worker's frames: logs the minute's longest map-lock hold and its holder
+  /// and what the allocator holds (HeapReport), and returns glibc's free heap pages to the kernel
+  /// (ReleaseFreeHeapMemory).
   void EveryMinute();
   /// The camera mount T_base_camera: from TF if available at the first frame, else the default.
   const Eigen::Isometry3d& CameraMount(const std::string& camera_frame, const ros::Time& stamp);
