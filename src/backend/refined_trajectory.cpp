@@ -1,5 +1,7 @@
 #include "dslam/backend/refined_trajectory.h"
 
+#include "dslam/core/keyframe_motion.h"
+
 namespace dslam {
 namespace {
 
@@ -63,6 +65,31 @@ void RefinedTrajectory::UpdateKeyFrames(const Map& map) {
     live_[id] = keyframe.T_world_camera;
   }
   RetireErased(map);
+}
+
+void RefinedTrajectory::FollowCorrection(const Map& map) {
+  RetireErased(map);  // erased since the last update: at their poses before the correction
+  KeyFrameMotion motion;
+  for (const auto& [id, T_world_keyframe_old] : live_) {
+    if (const KeyFrame* keyframe = map.FindKeyFrame(id)) {
+      motion.Add(id, keyframe->T_world_camera, T_world_keyframe_old);
+    }
+  }
+  if (!motion.empty()) {
+    const auto moved = [&motion](std::vector<ErasedKeyFrame> keyframes) {
+      for (ErasedKeyFrame& keyframe : keyframes) {
+        keyframe = CompactErased(keyframe.id, motion.For(keyframe.id) *
+                                                  Unpack(keyframe.q_world_keyframe,
+                                                         keyframe.t_world_keyframe));
+      }
+      return keyframes;
+    };
+    for (auto& block : erased_) {
+      block = std::make_shared<const std::vector<ErasedKeyFrame>>(moved(*block));
+    }
+    open_erased_ = moved(std::move(open_erased_));
+  }
+  UpdateKeyFrames(map);
 }
 
 void RefinedTrajectory::RetireErased(const Map& map) {

@@ -348,7 +348,7 @@ bool Slam::ApplyCorrection(const std::map<int, Eigen::Isometry3d>& T_world_camer
   }
   live->CorrectKeyFrames(T_world_camera_corrected, T_world_camera_before);
   odometry_.AdoptNewestKeyFramePose();
-  if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
+  if (refined_recording_ == RefinedPoseRecording::kOn) refined_.FollowCorrection(map());
   if (!observers_.empty()) {  // delivered with the next events (the static map follows)
     events_.corrected.clear();
     for (const KeyFrame* keyframe : map().AllKeyFrames()) {

@@ -1,10 +1,10 @@
 #include "dslam/mapping/static_mapper.h"
 
 #include <algorithm>
-#include <map>
 #include <unordered_map>
 #include <utility>
 
+#include "dslam/core/keyframe_motion.h"
 #include "dslam/mapping/coloured_cloud.h"
 
 namespace dslam {
@@ -148,18 +148,16 @@ void StaticMapper::OnCorrection(const std::vector<KeyFramePose>& keyframes) {
                                 }),
                  points.end());
   }
-  // [world_new <- world_old] of each fused keyframe in the correction; one the map erased moves
-  // with the nearest older one that is in it (the nearest newer one when none is older).
-  std::map<int, Eigen::Isometry3d> moved;
+  // The fused keyframes in the correction move with it; one the map erased moves as
+  // KeyFrameMotion says (with the nearest older one in it).
+  KeyFrameMotion motion;
   for (const FusedKeyFrame& fused : fused_) {
     const auto pose = poses.find(fused.id);
-    if (pose != poses.end()) moved[fused.id] = pose->second * fused.T_world_camera.inverse();
+    if (pose != poses.end()) motion.Add(fused.id, pose->second, fused.T_world_camera);
   }
   voxels_.Clear();
   for (FusedKeyFrame& fused : fused_) {
-    auto nearest = moved.upper_bound(fused.id);
-    if (nearest != moved.begin()) --nearest;
-    if (nearest != moved.end()) fused.T_world_camera = nearest->second * fused.T_world_camera;
+    if (!motion.empty()) fused.T_world_camera = motion.For(fused.id) * fused.T_world_camera;
     const Eigen::Isometry3f T = fused.T_world_camera.cast<float>();
     for (const ColouredPoint& point : fused.points_camera) {
       voxels_.Add(Transformed(T, point), fused.id);

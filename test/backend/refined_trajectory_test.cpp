@@ -1,7 +1,10 @@
 // RefinedTrajectory: frames follow their keyframes' refined poses, erased keyframes keep their
-// last pose, and the compact record and block snapshots change the poses by less than the 1e-6 m
+// last pose until a loop correction moves them with the nearest keyframe it moved, and the compact record and block snapshots change the poses by less than the 1e-6 m
 // the trajectory files print.
 #include <gtest/gtest.h>
+
+#include <iterator>
+#include <map>
 
 #include "dslam/backend/refined_trajectory.h"
 
@@ -56,6 +59,51 @@ TEST(RefinedTrajectory, FramesFollowTheirKeyFramesAndErasedOnesKeepTheirLastPose
     EXPECT_NEAR(dy, i >= newest_first_frame ? 0.05 : 0.0, 1e-6) << i;
   }
   EXPECT_LE(snapshot.live.size(), 2 * map.num_keyframes() + 64);
+}
+
+// A loop correction moves the keyframes in the map by 1, 2 and 3 m: the frames anchored on
+// keyframes erased before it move with the nearest keyframe the correction moved (here the oldest
+// in the map, none being older), the others with their own; a snapshot taken before keeps the old
+// poses.
+TEST(RefinedTrajectory, ALoopCorrectionMovesTheFramesOfErasedKeyFramesToo) {
+  Map map;
+  RefinedTrajectory refined;
+  Trajectory causal;
+  const int frames = static_cast<int>(RefinedTrajectory::kBlock + 400);  // a full block too
+  for (int i = 0; i < frames; ++i) {
+    if (i % 50 == 0) map.AddKeyFrame(KeyFrameAt(i, 0.01 * i), KeyFrameMapLimits::Newest(3));
+    causal.push_back({0.1 * i, PoseNear(0.01 * i + 0.003 * (i % 50), 0.001 * i)});
+    refined.AddFrame(causal.back().stamp_s, causal.back().T_world_camera, map);
+  }
+  refined.UpdateKeyFrames(map);  // the erased keyframes retire into their blocks
+  const RefinedTrajectory::Snapshot before = refined.Take();
+  ASSERT_EQ(map.keyframes().size(), 3u);
+  std::map<int, Eigen::Isometry3d> corrected;
+  std::map<int, double> dy_of_keyframe;  // [m]
+  double dy = 1.0;
+  for (const KeyFrame& keyframe : map.keyframes()) {
+    Eigen::Isometry3d T = keyframe.T_world_camera;
+    T.translation().y() += dy;
+    corrected[keyframe.id] = T;
+    dy_of_keyframe[keyframe.frame_index] = dy;
+    dy += 1.0;
+  }
+  map.CorrectKeyFrames(corrected, {});
+  refined.FollowCorrection(map);
+  const Trajectory poses = refined.Poses();
+  ASSERT_EQ(poses.size(), causal.size());
+  for (int i = 0; i < frames; i += 13) {
+    auto own = dy_of_keyframe.upper_bound(i);  // the frame's keyframe: the newest at or before i
+    const double expected = own == dy_of_keyframe.begin() ? 1.0 : std::prev(own)->second;
+    EXPECT_NEAR(poses[i].T_world_camera.translation().y() -
+                    causal[i].T_world_camera.translation().y(),
+                expected, 1e-6)
+        << i;
+    EXPECT_TRUE(poses[i].T_world_camera.linear().isApprox(causal[i].T_world_camera.linear(), 1e-6));
+  }
+  const Trajectory old_poses = before.Poses();
+  EXPECT_NEAR(old_poses[0].T_world_camera.translation().y(),
+              causal[0].T_world_camera.translation().y(), 1e-6);
 }
 
 }  // namespace

@@ -5,13 +5,16 @@
 // estimated at its frame) is what FrameResult reports; this one is for offline evaluation and
 // the node's save_refined_trajectory.
 //
+// After a loop correction (FollowCorrection) a keyframe erased from the map moves with the
+// nearest older keyframe the correction moved, as the static map's fused keyframes do.
+//
 // Memory and copies over hours: a frame costs 40 bytes, a keyframe erased from the map 64
 // (T_keyframe_camera in single precision: below 1e-7 m and 1e-7 rad for keyframe offsets under a
 // metre, under the 1e-6 m the trajectory files print). Frames and the poses of keyframes erased
-// from the map are kept in full blocks that are never written again and are shared by snapshots, so
-// Take() copies a few pointers, the open block and the poses of the keyframes still in the map,
-// whatever the run's length: Slam takes it under its map lock and computes the poses after
-// releasing it.
+// from the map are kept in full blocks that only a loop correction writes again and that are
+// shared by snapshots, so Take() copies a few pointers, the open block and the poses of the
+// keyframes still in the map, whatever the run's length: Slam takes it under its map lock and
+// computes the poses after releasing it.
 
 #include <cstdint>
 #include <memory>
@@ -62,6 +65,12 @@ class RefinedTrajectory {
   /// Takes the current poses of the keyframes in `map`, window and archive (call after the back
   /// end or a re-anchoring changed them). Keyframes erased from the map keep their last pose.
   void UpdateKeyFrames(const Map& map);
+
+  /// UpdateKeyFrames after a loop correction moved the keyframes of `map`: the keyframes erased
+  /// from the map before it move too, each as KeyFrameMotion says (with the nearest older keyframe
+  /// the correction moved), and so do the frames anchored on them. O(erased keyframes): the
+  /// erased blocks are written anew (snapshots keep the blocks they hold).
+  void FollowCorrection(const Map& map);
 
   /// The state Poses() reads; O(keyframes in the map + one block), not O(frames).
   Snapshot Take() const;
