@@ -117,7 +117,10 @@ std::vector<std::pair<std::string, std::string>> ScenarioNames() {
   return {{"static_room", "textured room, nothing moves, camera xyz"},
           {"static_room_distorted",
            "static room, camera rpy, lens with TUM fr1's distortion (k1 0.26, k2 -0.95)"},
+          {"static_room_kinect",
+           "static room, camera xyz, a structured-light camera's depth errors (Kinect v1)"},
           {"walking", "two walkers covering much of the view, camera xyz"},
+          {"walking_kinect", "'walking' with a structured-light camera's depth errors"},
           {"walking_static", "the two walkers of 'walking', static camera (mm jitter)"},
           {"walking_halfsphere", "the two walkers of 'walking', camera on a half sphere"},
           {"close_person", "one walker stopping 0.7 m in front of the camera, camera small xyz"},
@@ -136,6 +139,12 @@ Scenario MakeScenario(const std::string& name, uint32_t seed) {
     Scenario s = Base(name, seed, CameraMotionKind::kRpy);
     // The published calibration of TUM RGB-D's freiburg1 colour camera (plumb_bob).
     s.sensor.distortion = {0.2624, -0.9531, -0.0054, 0.0026, 1.1633};
+    return s;
+  }
+  if (name == "static_room_kinect" || name == "walking_kinect") {
+    Scenario s = MakeScenario(name == "walking_kinect" ? "walking" : "static_room", seed);
+    s.name = name;
+    s.sensor.structured_light.enabled = true;
     return s;
   }
   if (name == "walking" || name == "walking_static" || name == "walking_halfsphere") {

@@ -1,31 +1,15 @@
 // Sensor model of the synthetic RGB-D camera (sequence.h: ApplySensorModel).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "dslam/synth/sequence.h"
+#include "dslam/synth/structured_light.h"
+#include "sensor_noise.h"
 
 namespace dslam {
 namespace synth {
 namespace {
-
-/// splitmix64: a counter-based generator, so every pixel's noise is independent of the order (and
-/// the thread) in which pixels are processed.
-uint64_t Mix64(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-
-double Unit(uint64_t bits) {
-  return (static_cast<double>(bits >> 11) + 0.5) * (1.0 / 9007199254740992.0);
-}
-
-/// Standard normal sample (Box-Muller) for `key`.
-double Gaussian(uint64_t key) {
-  const uint64_t a = Mix64(key), b = Mix64(a);
-  return std::sqrt(-2.0 * std::log(Unit(a))) * std::cos(2.0 * M_PI * Unit(b));
-}
 
 /// Approximately normal sample with unit variance: sum of four 16-bit uniforms (Irwin-Hall),
 /// cheap enough for the three colour channels of every pixel.
@@ -57,6 +41,8 @@ void ApplySensorModel(const SensorParams& s, uint32_t seed, int index, const cv:
   *colour = cv::Mat(colour_clean.size(), CV_8UC3);
   *depth_units = cv::Mat(depth_true_m.size(), CV_16UC1, cv::Scalar(0));
   const uint64_t n = static_cast<uint64_t>(colour_clean.total());
+  std::optional<StructuredLightFrame> structured_light;
+  if (s.structured_light.enabled) structured_light.emplace(s, seed, frame_key, depth_true_m);
   cv::parallel_for_(
       cv::Range(0, colour_clean.rows),
       [&](const cv::Range& rows) {
@@ -77,8 +63,15 @@ void ApplySensorModel(const SensorParams& s, uint32_t seed, int index, const cv:
                 Unit(Mix64(key ^ 0x5bd1e995ull)) < s.edge_dropout_probability) {
               continue;
             }
-            const double sigma = s.depth_sigma_quadratic_per_m * d * d + s.depth_sigma_constant_m;
-            const double units = std::round((d + sigma * Gaussian(key)) * s.depth_scale);
+            double measured_m = 0.0;
+            if (structured_light) {
+              measured_m = structured_light->Depth(u, v, d, key);
+              if (!(measured_m > 0.0)) continue;
+            } else {
+              const double sigma = s.depth_sigma_quadratic_per_m * d * d + s.depth_sigma_constant_m;
+              measured_m = d + sigma * Gaussian(key);
+            }
+            const double units = std::round(measured_m * s.depth_scale);
             depth_units->at<uint16_t>(v, u) =
                 static_cast<uint16_t>(std::max(1.0, std::min(65535.0, units)));
           }

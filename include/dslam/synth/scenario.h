@@ -24,6 +24,27 @@ struct RoomParams {
   double furniture_jitter_m = 0.15;  ///< [m] seed-dependent shift of each furniture piece
 };
 
+/// Depth of a structured-light camera (Kinect v1, the camera of TUM RGB-D and Bonn): it measures
+/// the disparity fx b / d of a projected pattern, matched over windows of pixels, so its errors are
+/// disparity errors (growing as d^2 in depth), smooth over the image, partly fixed to the sensor
+/// and partly new in every frame, and rounded to a fraction of a pixel; at a depth edge the nearer
+/// surface's depth spreads onto the farther one. With the defaults the disparity error has a
+/// standard deviation of 0.15 px: a depth sigma of 0.0038 d^2 per measurement [m, d in m] at
+/// fx 525 px and b 0.075 m, and 0.0054 d^2 between two measurements, as the depth residuals of
+/// real Kinect frames show (0.0046-0.0065 d^2 on Bonn crowd; BENCHMARKS.md, "Issue 46, part 1").
+/// Replaces SensorParams' Gaussian depth noise when enabled.
+struct StructuredLightParams {
+  bool enabled = false;
+  double baseline_m = 0.075;         ///< [m] projector to depth camera
+  double fixed_sigma_px = 0.10;      ///< [px] disparity error field fixed to the sensor (seed)
+  double frame_sigma_px = 0.10;      ///< [px] disparity error field drawn anew for each frame
+  double pixel_sigma_px = 0.03;      ///< [px] disparity error of each pixel alone
+  double field_cell_px = 16.0;       ///< [px] grid spacing of the two smooth fields
+  double disparity_step_px = 0.125;  ///< [px] the disparity is rounded to multiples of this
+  int bleed_px = 2;                  ///< [px] reach of the nearer depth at an edge
+  double bleed_probability = 0.5;    ///< chance that a pixel within that reach reads it
+};
+
 /// Sensor model of the Kinect-like RGB-D camera.
 struct SensorParams {
   int width = 640, height = 480;                ///< [px]
@@ -41,6 +62,7 @@ struct SensorParams {
   /// rendered through an ideal pinhole camera with a margin and warped into the distorted image
   /// with OpenCV's cv::undistortPoints (independent of PinholeCamera::Distort/Undistort).
   Distortion distortion;
+  StructuredLightParams structured_light;  ///< off: Gaussian depth noise per pixel (above)
 };
 
 /// Everything that defines a synthetic sequence.

@@ -76,7 +76,9 @@ class SyntheticSequence {
 };
 
 /// Applies the sensor model to noise-free images of frame `index`: depth noise with
-/// sigma = a d^2 + b, range limits, dropouts at depth edges, 16-bit quantisation, colour noise.
+/// sigma = a d^2 + b or, when sensor.structured_light is enabled, a structured-light camera's
+/// disparity errors and edge bleeding; range limits, dropouts at depth edges, 16-bit
+/// quantisation, colour noise.
 /// Noise comes from a counter-based generator keyed by (seed, index, pixel).
 void ApplySensorModel(const SensorParams& sensor, uint32_t seed, int index,
                       const cv::Mat& colour_clean, const cv::Mat& depth_true_m, cv::Mat* colour,
