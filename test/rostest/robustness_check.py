@@ -54,12 +54,17 @@ class RobustnessTest(unittest.TestCase):
         self.check_invalid_parameter()
 
     def check_path(self, node, stamp):
-        """The newest path holds the newest base poses in `map` (map -> odom being the identity
-        here: the odom poses of the same stamps), oldest first, all from the run that began when
-        time went backwards (stamp[0] + 0.5)."""
+        """Each path published is in stamp order (one run); the newest holds the newest base poses
+        in `map` (map -> odom being the identity here: the odom poses of the same stamps), oldest
+        first, all from the run that began when time went backwards (stamp[0] + 0.5)."""
         # Arrival order: a stamp sent twice (frame 15's, again when time went backwards) keeps
         # its newest pose.
         odom = {o.header.stamp.to_nsec(): o.pose.pose for o in node.rec.messages("odom")}
+        # Every path published holds one run, oldest first: the path is emptied when time goes
+        # backwards (a path still holding the old run's later stamps is out of order).
+        for published in node.rec.messages("path"):
+            in_order = [p.header.stamp.to_nsec() for p in published.poses]
+            self.assertEqual(in_order, sorted(in_order), "a path mixes two runs")
         path = node.rec.last("path")
         self.assertEqual(path.header.frame_id, "map")
         stamps = [p.header.stamp.to_nsec() for p in path.poses]
