@@ -5,12 +5,13 @@ test_heap_report_jemalloc shows the mechanism: a binary linked this way allocate
 import os
 import re
 import subprocess
+import sys
 import unittest
 import xml.etree.ElementTree as ElementTree
 
-from test_layering import find_library_dir
-
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)  # nose does not add it
+from test_layering import find_library_dir  # noqa: E402
 LAUNCH = os.path.join(HERE, "..", "..", "launch", "dslam.launch")
 
 
