@@ -82,7 +82,7 @@ class KeyFrameMapTest(unittest.TestCase):
     def check_second_node(self, folder, bag, work, saved_keyframes):
         rec = Recorder()
         rec.subscribe("/dslam_loaded/status", FrameStatus, "status")
-        play_bag(bag, node="/dslam_loaded", options=["-s", "1.0"])  # frames 30-59
+        play_bag(bag, node="/dslam_loaded", options=["-s", "1.0"], recorder=rec)  # frames 30-59
         states = [s.state for s in rec.messages("status")]
         # Every set of frames 30-59 is processed or, while the worker is busy (the first frame
         # starts the loaded map and relocalises), dropped and counted: exact either way.

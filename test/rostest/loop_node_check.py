@@ -46,7 +46,7 @@ class LoopNodeTest(unittest.TestCase):
         rec.subscribe("/dslam/odom", Odometry, "odom", queue_size=1000)
         rec.subscribe("/dslam/loop_edges", MarkerArray, "loop_edges")
         rec.subscribe("/tf", TFMessage, "tf", queue_size=1000)
-        play_bag(bag, rate=0.5, settle_s=5.0)
+        play_bag(bag, rate=0.5, settle_s=5.0, recorder=rec)
         statuses = rec.messages("status")
         loops = statuses[-1].loop_closures
         rospy.loginfo("loop_node_check: %d frames processed, %d loops", len(statuses), loops)

@@ -27,7 +27,7 @@ class MovingObjectsTest(unittest.TestCase):
         rec = Recorder()
         rec.subscribe("/dslam/moving_objects", MovingObjects, "objects", queue_size=200)
         rec.subscribe("/dslam/moving_object_markers", MarkerArray, "markers", queue_size=200)
-        play_bag(bag)
+        play_bag(bag, recorder=rec)
         self.check_objects(rec.messages("objects"))
         self.check_markers(rec.messages("markers"))
 

@@ -63,7 +63,7 @@ class OdometryBagTest(unittest.TestCase):
                   ("keyframe_path", Path), ("loop_edges", MarkerArray)]
         subs = [rec.subscribe("/dslam/" + t, c, t) for t, c in topics]
         subs.append(rec.subscribe("/tf", TFMessage, "tf"))
-        play_bag(bag)
+        play_bag(bag, recorder=rec)
         for name in ["odom", "static_points", "dynamic_points", "graph_edges", "status", "tf",
                      "static_map", "keyframe_path", "loop_edges"]:
             self.assertGreater(rec.count(name), 0, "nothing received on " + name)

@@ -20,10 +20,27 @@ class Recorder:
     def __init__(self):
         self._lock = threading.Lock()
         self._received = collections.defaultdict(list)  # name -> [(arrival_s, msg)]
+        self._subscribers = []
 
     def subscribe(self, topic, msg_class, name, queue_size=100):
         """A rospy.Subscriber of `topic` that records its messages as `name`."""
-        return rospy.Subscriber(topic, msg_class, self.callback(name), queue_size=queue_size)
+        subscriber = rospy.Subscriber(topic, msg_class, self.callback(name), queue_size=queue_size)
+        self._subscribers.append(subscriber)
+        return subscriber
+
+    def wait_until_connected(self, timeout_s=30.0):
+        """Waits until every subscriber made by subscribe() is connected to a publisher: rospy
+        connects in the background, and a message published before that is never received.
+        Raises AssertionError naming the topics still unconnected after `timeout_s`."""
+        deadline = time.monotonic() + timeout_s
+        while True:
+            waiting = [s.name for s in self._subscribers if s.get_num_connections() == 0]
+            if not waiting:
+                return
+            if time.monotonic() > deadline:
+                raise AssertionError("no publisher connected within %.0f s: %s"
+                                     % (timeout_s, ", ".join(waiting)))
+            time.sleep(0.05)
 
     def callback(self, name):
         """A subscriber callback that records each message as `name`."""
@@ -51,13 +68,16 @@ class Recorder:
             return self._received.get(name, [])[-1][1]
 
 
-def play_bag(bag, rate=0.5, settle_s=2.0, node="/dslam", options=()):
+def play_bag(bag, rate=0.5, settle_s=2.0, node="/dslam", options=(), recorder=None):
     """Plays the camera topics of `bag` (test_scenes.scene(..., with_bag=True)) into the dslam
-    node in namespace `node`: waits for it (its save_trajectory service, up to 30 s), plays at
+    node in namespace `node`: waits for it (its save_trajectory service, up to 30 s) and for
+    `recorder`'s subscribers to connect (Recorder.wait_until_connected, when given), plays at
     `rate` times real time once a node subscribes (with rosbag play's `options`, e.g. ["-s", "1",
     "-u", "2"]: from 1 s into the bag for 2 s), then waits `settle_s` for it to process the last
     frames."""
     rospy.wait_for_service(node + "/save_trajectory", timeout=30.0)
+    if recorder is not None:
+        recorder.wait_until_connected()
     subprocess.check_call(["rosbag", "play", "--quiet", "-r", str(rate), "--wait-for-subscribers"]
                           + list(options) + [bag, "--topics"] + CAMERA_TOPICS)
     rospy.sleep(settle_s)
