@@ -124,9 +124,12 @@ std::vector<std::pair<std::string, std::string>> ScenarioNames() {
           {"walking_static", "the two walkers of 'walking', static camera (mm jitter)"},
           {"walking_halfsphere", "the two walkers of 'walking', camera on a half sphere"},
           {"close_person", "one walker stopping 0.7 m in front of the camera, camera small xyz"},
+          {"close_person_kinect", "'close_person' with a structured-light camera's depth errors"},
           {"slow_box", "two boxes sliding 3 and 1.5 mm per frame, camera xyz"},
           {"nonrigid_sheet", "a hanging sheet deformed by travelling waves, camera xyz"},
           {"fast_rotation", "static room, handheld fast roll/pitch/yaw with 15 ms motion blur"},
+          {"fast_rotation_kinect",
+           "'fast_rotation' with a structured-light camera's depth errors"},
           {"loop", "three walkers, camera on a half sphere; everything repeats after 20 s"},
           {"room_tour",
            "camera carried once round the room and into its first views again, two walkers"}};
@@ -141,8 +144,11 @@ Scenario MakeScenario(const std::string& name, uint32_t seed) {
     s.sensor.distortion = {0.2624, -0.9531, -0.0054, 0.0026, 1.1633};
     return s;
   }
-  if (name == "static_room_kinect" || name == "walking_kinect") {
-    Scenario s = MakeScenario(name == "walking_kinect" ? "walking" : "static_room", seed);
+  const std::string kKinect = "_kinect";
+  if (name.size() > kKinect.size() &&
+      name.compare(name.size() - kKinect.size(), kKinect.size(), kKinect) == 0) {
+    // The scene named before the suffix, its depth as a structured-light camera delivers it.
+    Scenario s = MakeScenario(name.substr(0, name.size() - kKinect.size()), seed);
     s.name = name;
     s.sensor.structured_light.enabled = true;
     return s;

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -140,6 +142,22 @@ TEST(StructuredLight, TheNearerDepthBleedsOntoTheFartherAtEdges) {
   }
   ASSERT_GT(eligible, 500);
   EXPECT_NEAR(static_cast<double>(bled) / eligible, s.structured_light.bleed_probability, 0.08);
+}
+
+/// A name with "_kinect" after another scenario's is that scenario with the structured-light
+/// depth: the same walkers, camera and frames; an unknown base name is refused.
+TEST(StructuredLight, KinectScenariosAreTheirBaseWithStructuredLight) {
+  for (const char* base : {"static_room", "walking", "close_person", "fast_rotation"}) {
+    const Scenario plain = MakeScenario(base, 3);
+    const Scenario kinect = MakeScenario(std::string(base) + "_kinect", 3);
+    EXPECT_EQ(kinect.name, std::string(base) + "_kinect");
+    EXPECT_FALSE(plain.sensor.structured_light.enabled) << base;
+    EXPECT_TRUE(kinect.sensor.structured_light.enabled) << base;
+    EXPECT_EQ(kinect.frames, plain.frames) << base;
+    EXPECT_EQ(kinect.walkers.size(), plain.walkers.size()) << base;
+    EXPECT_EQ(kinect.camera.kind, plain.camera.kind) << base;
+  }
+  EXPECT_THROW(MakeScenario("no_such_scene_kinect", 1), std::invalid_argument);
 }
 
 }  // namespace
