@@ -23,6 +23,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from dslam_tools import synth_cache  # noqa: E402
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
 BIN = os.path.join(WS, "devel", "lib", "dslam")
@@ -41,7 +44,7 @@ def run(cmd):
 def render(scenario, seed, frames, cache, bin_dir=BIN):
     """The folder of (scenario, seed) in `cache`, rendered once by bin_dir's dslam_synth."""
     folder = os.path.join(cache, f"{scenario}_f{frames}_s{seed}")
-    if not os.path.exists(os.path.join(folder, "groundtruth.txt")):
+    if not synth_cache.is_current(folder, scenario):
         run([os.path.join(bin_dir, "dslam_synth"), "--scenario", scenario, "--frames", str(frames),
              "--seed", str(seed), "--output", folder])
     return folder

@@ -17,7 +17,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from benchmark import run  # noqa: E402  (exits with the output of a failed command)
-from dslam_tools import mapping_report  # noqa: E402
+from dslam_tools import mapping_report, synth_cache  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
@@ -29,7 +29,7 @@ def render(scenario, seed, frames, cache):
     """The folder of (scenario, seed), rendered unless it already holds the truth files (folders
     rendered before objects.txt and depth_true/ existed are rendered again)."""
     folder = os.path.join(cache, f"{scenario}_f{frames}_s{seed}")
-    if not all(os.path.exists(os.path.join(folder, name)) for name in TRUTH_FILES):
+    if not synth_cache.is_current(folder, scenario, TRUTH_FILES):
         run([os.path.join(BIN, "dslam_synth"), "--scenario", scenario, "--frames", str(frames),
              "--seed", str(seed), "--output", folder])
     return folder

@@ -23,7 +23,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dslam_tools import speed_report  # noqa: E402
+from dslam_tools import speed_report, synth_cache  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WS = os.environ.get("DSLAM_WS", os.path.join(REPO, "build", "ws"))
@@ -138,7 +138,7 @@ def sequence_folder(name, bin_dir, cache):
     if name not in scenarios:
         return None
     folder = os.path.join(cache, f"{name}_f{SYNTH_FRAMES}_s{SYNTH_SEED}")
-    if not os.path.exists(os.path.join(folder, "groundtruth.txt")):
+    if not synth_cache.is_current(folder, name):
         check_run([synth, "--scenario", name, "--frames", str(SYNTH_FRAMES), "--seed",
                    str(SYNTH_SEED), "--output", folder])
     return folder

@@ -53,6 +53,26 @@ std::string OptionalString(const YAML::Node& root, const std::string& key,
   }
 }
 
+/// depth_sigma_d_quadratic and depth_sigma_d_constant_m: both or neither, each in [0, 0.1].
+void ReadDepthNoise(const YAML::Node& root, const std::string& path, CameraYaml* out) {
+  const char* kQuadratic = "depth_sigma_d_quadratic";
+  const char* kConstant = "depth_sigma_d_constant_m";
+  if (!root[kQuadratic] && !root[kConstant]) return;
+  if (!root[kQuadratic] || !root[kConstant]) {
+    throw std::runtime_error(path + ": give both " + kQuadratic + " and " + kConstant +
+                             " (the depth noise a d^2 + b) or neither");
+  }
+  for (const char* key : {kQuadratic, kConstant}) {
+    const double value = RequiredNumber(root, key, path);
+    if (!(value >= 0.0 && value <= 0.1)) {
+      throw std::runtime_error(path + ": " + key + " must be in [0, 0.1], got " +
+                               std::to_string(value));
+    }
+  }
+  out->depth_sigma_d_quadratic = RequiredNumber(root, kQuadratic, path);
+  out->depth_sigma_d_constant_m = RequiredNumber(root, kConstant, path);
+}
+
 CameraYaml CameraYamlFromNode(const YAML::Node& root, const std::string& path) {
   if (!root.IsMap()) {
     throw std::runtime_error(path +
@@ -80,6 +100,7 @@ CameraYaml CameraYamlFromNode(const YAML::Node& root, const std::string& path) {
     throw std::runtime_error(path + ": depth_scale must be in [1, 1e6] units per metre, got " +
                              std::to_string(out.depth_scale));
   }
+  ReadDepthNoise(root, path, &out);
   const std::string correction = OptionalString(root, "groundtruth_correction", "none", path);
   if (correction == "bonn") {
     out.groundtruth_correction = GroundTruthCorrection::kBonn;
@@ -149,11 +170,21 @@ std::vector<AssociatedPair> AssociateByStamp(const std::vector<StampedFile>& col
   return pairs;
 }
 
+std::string CameraYamlPath(const std::string& folder, const std::string& camera_yaml_path) {
+  return camera_yaml_path.empty() ? folder + "/camera.yaml" : camera_yaml_path;
+}
+
+bool UseCameraDepthNoise(const CameraYaml& camera, DepthNoiseConfig* depth_noise) {
+  if (!camera.depth_sigma_d_quadratic || !camera.depth_sigma_d_constant_m) return false;
+  depth_noise->sigma_d_quadratic = *camera.depth_sigma_d_quadratic;
+  depth_noise->sigma_d_constant_m = *camera.depth_sigma_d_constant_m;
+  return true;
+}
+
 TumDataset::TumDataset(const std::string& folder, const std::string& camera_yaml_path,
                        double association_max_dt_s)
     : folder_(folder) {
-  camera_yaml_ =
-      LoadCameraYaml(camera_yaml_path.empty() ? folder + "/camera.yaml" : camera_yaml_path);
+  camera_yaml_ = LoadCameraYaml(CameraYamlPath(folder, camera_yaml_path));
   pairs_ = AssociateByStamp(ReadFileList(folder + "/rgb.txt"), ReadFileList(folder + "/depth.txt"),
                             association_max_dt_s);
 }

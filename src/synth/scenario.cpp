@@ -203,5 +203,11 @@ Scenario MakeScenario(const std::string& name, uint32_t seed) {
   throw std::invalid_argument("unknown scenario '" + name + "'");
 }
 
+void UseSensorDepthNoise(const SensorParams& sensor, DepthNoiseConfig* depth_noise) {
+  if (sensor.structured_light.enabled) return;
+  depth_noise->sigma_d_quadratic = sensor.depth_sigma_quadratic_per_m;
+  depth_noise->sigma_d_constant_m = sensor.depth_sigma_constant_m;
+}
+
 }  // namespace synth
 }  // namespace dslam

@@ -63,6 +63,12 @@ void WriteCameraYaml(const std::string& path, const SensorParams& s) {
       << "\nk2: " << number(d.k2) << "\np1: " << number(d.p1) << "\np2: " << number(d.p2)
       << "\nk3: " << number(d.k3) << "\ndepth_scale: " << s.depth_scale
       << "\ngroundtruth_correction: none\n";
+  if (!s.structured_light.enabled) {
+    // The renderer's depth noise, independent per pixel: the tracker's depth model for this
+    // camera (a structured-light render, like a real camera, states none).
+    out << "depth_sigma_d_quadratic: " << number(s.depth_sigma_quadratic_per_m)
+        << "\ndepth_sigma_d_constant_m: " << number(s.depth_sigma_constant_m) << "\n";
+  }
   if (!out) throw std::runtime_error("error while writing " + path);
 }
 

@@ -218,7 +218,15 @@ std::shared_ptr<const dslam::Vocabulary> RunVocabulary(const Args& args,
 }
 
 int Run(const Args& args) {
+  // The camera's depth noise (camera.yaml, when it states one) replaces the defaults' real-camera
+  // model; a --config file's depth_noise keys replace both.
   dslam::Config config;
+  const std::string camera_yaml = dslam::CameraYamlPath(args.dataset, args.camera);
+  if (dslam::UseCameraDepthNoise(dslam::LoadCameraYaml(camera_yaml), &config.depth_noise) &&
+      !args.quiet) {
+    std::printf("depth noise from %s: %g d^2 + %g m\n", camera_yaml.c_str(),
+                config.depth_noise.sigma_d_quadratic, config.depth_noise.sigma_d_constant_m);
+  }
   if (!args.config.empty()) dslam::LoadConfigYaml(args.config, &config);
   if (!args.static_points.empty()) config.static_points.enabled = args.static_points == "on";
   if (!args.backend.empty()) config.backend.enabled = args.backend == "on";

@@ -38,9 +38,11 @@ struct RunResult {
   int first_pose_after = -1;      ///< frames after the last bad one until a pose is reported
 };
 
-/// The back end on, the rest default.
+/// The back end on, the depth model static_room's sensor's (every scene here is static_room's),
+/// the rest default.
 Config WithBackEnd() {
   Config config;
+  synth::UseSensorDepthNoise(synth::MakeScenario("static_room", 1).sensor, &config.depth_noise);
   config.backend.enabled = true;
   return config;
 }

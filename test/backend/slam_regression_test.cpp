@@ -19,7 +19,7 @@ struct RunResult {
 };
 
 RunResult RunSlam(const Rendered& rendered, bool backend) {
-  Config config;
+  Config config = test::SensorConfig(rendered);
   config.backend.enabled = backend;
   Slam slam(config);
   RunResult out;
@@ -49,7 +49,7 @@ TEST(SlamRegression, BackEndKeepsStaticRoomAccurate) {
 
 TEST(SlamRegression, BackEndOffIsTheFrontEnd) {
   const Rendered rendered = RenderSequence("walking", 45);
-  Config config;
+  Config config = test::SensorConfig(rendered);
   config.backend.enabled = false;
   Slam slam(config);
   Odometry odometry(config);
@@ -78,7 +78,7 @@ Eigen::Isometry3d ErrorAt(const Trajectory& estimated, const Trajectory& truth, 
 TEST(SlamRegression, ReanchoringUndoesATurnWhilePeopleCoverTheView) {
   constexpr int kFrames = 160;
   const Rendered rendered = RenderSequence("walking", kFrames, 2);
-  Config config;
+  Config config = test::SensorConfig(rendered);
   config.backend.enabled = false;
   auto run = [&](bool reanchoring, int* reanchored, Trajectory* refined) {
     config.tracking.reanchoring = reanchoring;

@@ -12,7 +12,9 @@ namespace {
 PinholeCamera TestCamera() { return PinholeCamera(640, 480, 525.0, 520.0, 319.5, 239.5); }
 
 TEST(DepthUncertainty, FlatDepthGivesModelVariance) {
-  const DepthNoiseConfig config;
+  DepthNoiseConfig config;
+  config.sigma_d_quadratic = 1.4e-3;
+  config.sigma_d_constant_m = 1e-3;
   const cv::Mat depth(480, 640, CV_32FC1, cv::Scalar(2.0));
   const auto mixture = MixDepth(depth, 100, 200, config);
   ASSERT_TRUE(mixture.has_value());

@@ -29,6 +29,35 @@ TEST(CameraYaml, ParsesText) {
   EXPECT_DOUBLE_EQ(parsed.depth_scale, 1000.0);
 }
 
+/// A camera's own depth noise: both keys or neither, each in [0, 0.1]; UseCameraDepthNoise sets
+/// depth_noise from it and leaves depth_noise alone when the file states none.
+TEST(CameraYaml, DepthNoiseIsTheCamerasWhenStated) {
+  const std::string base = std::string("width: 640\nheight: 480\n") + kIntrinsics;
+  DepthNoiseConfig noise;
+  noise.sigma_d_quadratic = 0.5e-3;
+  noise.sigma_d_constant_m = 0.5e-3;
+  const DepthNoiseConfig before = noise;
+  EXPECT_FALSE(UseCameraDepthNoise(ParseCameraYaml(base, "cam.yaml"), &noise));
+  EXPECT_EQ(noise.sigma_d_quadratic, before.sigma_d_quadratic);
+  EXPECT_EQ(noise.sigma_d_constant_m, before.sigma_d_constant_m);
+  const CameraYaml stated = ParseCameraYaml(
+      base + "depth_sigma_d_quadratic: 0.0014\ndepth_sigma_d_constant_m: 0.001\n", "cam.yaml");
+  EXPECT_TRUE(UseCameraDepthNoise(stated, &noise));
+  EXPECT_EQ(noise.sigma_d_quadratic, 0.0014);
+  EXPECT_EQ(noise.sigma_d_constant_m, 0.001);
+  EXPECT_EQ(noise.pixel_sigma_px, before.pixel_sigma_px);
+  EXPECT_NE(ErrorOf(base + "depth_sigma_d_quadratic: 0.0014\n").find("cam.yaml: give both"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(base + "depth_sigma_d_quadratic: 0.2\ndepth_sigma_d_constant_m: 0.001\n")
+                .find("depth_sigma_d_quadratic must be in [0, 0.1]"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(base + "depth_sigma_d_quadratic: 0.001\ndepth_sigma_d_constant_m: .nan\n")
+                .find("depth_sigma_d_constant_m"),
+            std::string::npos);
+  EXPECT_EQ(CameraYamlPath("/data/seq", ""), "/data/seq/camera.yaml");
+  EXPECT_EQ(CameraYamlPath("/data/seq", "/calib/cam.yaml"), "/calib/cam.yaml");
+}
+
 TEST(CameraYaml, RejectsTopLevelThatIsNotAMap) {
   // yaml-cpp's "operator[] call on a scalar" escaped before, naming neither file nor key.
   EXPECT_NE(ErrorOf("2 bon-BRnlmu# r").find("cam.yaml: expected a map"), std::string::npos);

@@ -32,7 +32,7 @@ const test::RenderedSequence& Tour() {
 }
 
 TourRun RunRoomTour(const std::vector<RgbdFrame>& frames, bool loop_closing) {
-  Config config;
+  Config config = test::SensorConfig(Tour());
   config.backend.enabled = true;
   std::vector<std::shared_ptr<KeyFrameObserver>> observers;
   std::shared_ptr<LoopClosing> closer;

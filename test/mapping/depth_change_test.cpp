@@ -22,6 +22,15 @@ struct Box {
   double x0, x1, y0, y1;
 };
 
+/// The depth model of the camera Render() simulates: independent Gaussian noise of
+/// 0.0014 d^2 + 0.001 m per pixel (a precise camera; the default models a real one, looser).
+DepthNoiseConfig Noise() {
+  DepthNoiseConfig noise;
+  noise.sigma_d_quadratic = 1.4e-3;
+  noise.sigma_d_constant_m = 1.0e-3;
+  return noise;
+}
+
 /// The depth image of a camera at (tx, 0, 0) looking along world z (identity rotation): the wall
 /// at z = kWallZ, the boxes in front of it; Gaussian noise of sigma_d(z) when `rng` is given.
 RgbdFrame Render(double tx, const std::vector<Box>& boxes, std::mt19937* rng) {
@@ -29,7 +38,7 @@ RgbdFrame Render(double tx, const std::vector<Box>& boxes, std::mt19937* rng) {
   frame.camera = std::make_shared<PinholeCamera>(kWidth, kHeight, 525, 525, 319.5, 239.5);
   frame.depth_m = cv::Mat(kHeight, kWidth, CV_32FC1);
   frame.colour = cv::Mat(kHeight, kWidth, CV_8UC3, cv::Scalar(200, 200, 200));
-  const DepthNoiseConfig noise;
+  const DepthNoiseConfig noise = Noise();
   std::normal_distribution<double> gauss(0.0, 1.0);
   for (int v = 0; v < kHeight; ++v) {
     for (int u = 0; u < kWidth; ++u) {
@@ -76,7 +85,7 @@ TEST(DepthReference, KeepsOneFramePerIntervalAndTheNewest) {
   DynamicMaskConfig config = SeedConfig();
   config.depth_change_interval_s = 0.2;
   config.depth_change_references = 2;
-  DepthReference reference(config, DepthNoiseConfig());
+  DepthReference reference(config, Noise());
   const RgbdFrame wall = Render(0.0, {}, nullptr);
   for (int i = 0; i < 30; ++i) reference.Add(wall, CameraAt(0.0), i / 30.0);
   EXPECT_EQ(reference.size(), 2);
@@ -85,7 +94,7 @@ TEST(DepthReference, KeepsOneFramePerIntervalAndTheNewest) {
 }
 
 TEST(DepthReference, ChangedOnlyInFrontOfWhatWasSeen) {
-  DepthReference reference(SeedConfig(), DepthNoiseConfig());
+  DepthReference reference(SeedConfig(), Noise());
   reference.Add(Render(0.0, {}, nullptr), CameraAt(0.0), 0.0);
   EXPECT_TRUE(reference.Changed(Eigen::Vector3d(0.1, 0.0, kBoxZ), kBoxZ));
   EXPECT_FALSE(reference.Changed(Eigen::Vector3d(0.1, 0.0, kWallZ), kWallZ));
@@ -98,7 +107,7 @@ TEST(DepthReference, ChangedOnlyInFrontOfWhatWasSeen) {
 TEST(DepthReference, FrameTestAgreesWithTheWorldFrameTest) {
   // References of the wall and of a box before it, seen from x = 0 and 0.2 m; the test of a frame
   // at x = 0.5 m on its points (optical frame) answers as Changed() on them in the world frame.
-  DepthReference reference(SeedConfig(), DepthNoiseConfig());
+  DepthReference reference(SeedConfig(), Noise());
   reference.Add(Render(0.0, {}, nullptr), CameraAt(0.0), 0.0);
   reference.Add(Render(0.2, {{0.3, 0.8, -0.4, 0.4}}, nullptr), CameraAt(0.2), 0.2);
   const Eigen::Isometry3d T_world_camera = CameraAt(0.5);
@@ -122,7 +131,7 @@ TEST(DepthReference, FrameTestAgreesWithTheWorldFrameTest) {
 
 TEST(DepthChangeSeeds, BoxAppearingInFrontOfTheWallIsMasked) {
   std::mt19937 rng(7);
-  DepthReference reference(SeedConfig(), DepthNoiseConfig());
+  DepthReference reference(SeedConfig(), Noise());
   reference.Add(Render(0.0, {}, &rng), CameraAt(0.0), 0.0);
   const Box box{-0.2, 0.3, -0.5, 0.4};
   const RgbdFrame frame = Render(0.1, {box}, &rng);
@@ -148,7 +157,7 @@ TEST(DepthChangeSeeds, BoxAppearingInFrontOfTheWallIsMasked) {
 }
 
 TEST(DepthChangeSeeds, VerifiedStaticCellsAreNeverEntered) {
-  DepthReference reference(SeedConfig(), DepthNoiseConfig());
+  DepthReference reference(SeedConfig(), Noise());
   reference.Add(Render(0.0, {}, nullptr), CameraAt(0.0), 0.0);
   const RgbdFrame frame = Render(0.0, {{-0.2, 0.3, -0.5, 0.4}}, nullptr);
   std::vector<ObservedPoint> points(1);
@@ -163,7 +172,7 @@ TEST(DepthChangeSeeds, VerifiedStaticCellsAreNeverEntered) {
 TEST(DepthChangeSeeds, StaticWallAndBoxSeenFromMovingCameraGiveNoSeeds) {
   std::mt19937 rng(11);
   const Box box{-0.2, 0.3, -0.5, 0.4};  // in both frames: static
-  DepthReference reference(SeedConfig(), DepthNoiseConfig());
+  DepthReference reference(SeedConfig(), Noise());
   for (int i = 0; i < 3; ++i) {
     reference.Add(Render(0.05 * i, {box}, &rng), CameraAt(0.05 * i), 0.25 * i);
   }
@@ -177,7 +186,7 @@ TEST(DepthChangeSeeds, StaticWallAndBoxSeenFromMovingCameraGiveNoSeeds) {
   }
   // The wall alone with noise, seen from where the references were.
   const RgbdFrame wall = Render(0.0, {}, &rng);
-  DepthReference wall_reference(SeedConfig(), DepthNoiseConfig());
+  DepthReference wall_reference(SeedConfig(), Noise());
   wall_reference.Add(Render(0.0, {}, &rng), CameraAt(0.0), 0.0);
   EXPECT_EQ(ComputeDynamicMask(wall, CameraAt(0.0), {}, SeedConfig(), {}, 0.0, 0, &wall_reference)
                 .MaskedShare(),
@@ -186,7 +195,7 @@ TEST(DepthChangeSeeds, StaticWallAndBoxSeenFromMovingCameraGiveNoSeeds) {
 
 TEST(DepthChangeSeeds, SmallGroupsAreLeftOut) {
   DynamicMaskConfig config = SeedConfig();
-  DepthReference reference(config, DepthNoiseConfig());
+  DepthReference reference(config, Noise());
   reference.Add(Render(0.0, {}, nullptr), CameraAt(0.0), 0.0);
   // 0.08 m x 0.08 m at 2 m: 21 x 21 px, 5 x 5 cells of which 3 x 3 tested (stride 2): 36 cells
   // < depth_change_min_cells (40).

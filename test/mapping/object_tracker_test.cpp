@@ -240,7 +240,9 @@ TEST(ObservationsFromMask, PointVelocitiesAreMediansOverTheBaselineWithoutJumps)
   EXPECT_EQ(observations[0].motion_sigma_mps, 0.0);  // no noise model given
   // With the depth noise model and the camera 2 m from the centroid: sigma_d = 1.4e-3 * 2^2 +
   // 1e-3 m; 9 points over 0.2 s; 1.2533 sqrt(2) sigma_d sqrt(9 / 0.2^2) / 9.
-  const DepthNoiseConfig noise;
+  DepthNoiseConfig noise;
+  noise.sigma_d_quadratic = 1.4e-3;
+  noise.sigma_d_constant_m = 1e-3;
   const std::vector<ObjectObservation> with_noise =
       ObservationsFromMask(mask, config, 10.0, history, &noise, Eigen::Vector3d(1.0, 2.0, 0.0));
   ASSERT_EQ(with_noise.size(), 1u);

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "dslam/core/config.h"
 #include "dslam/core/trajectory.h"
 #include "dslam/synth/sequence.h"
 #include "support/scene_cache.h"
@@ -22,7 +23,15 @@ struct RenderedSequence {
   std::vector<RgbdFrame> frames;
   std::vector<cv::Mat> masks;  ///< per frame: CV_16UC1 moving-object id per pixel, 0 = static
   Trajectory groundtruth;      ///< T_world_camera per frame
+  synth::SensorParams sensor;  ///< the scenario's camera, its depth noise included
 };
+
+/// `config` with the depth model of `sequence`'s sensor (synth::UseSensorDepthNoise), as
+/// dslam_run_dataset reads it from the camera.yaml dslam_synth writes.
+inline Config SensorConfig(const RenderedSequence& sequence, Config config = Config()) {
+  synth::UseSensorDepthNoise(sequence.sensor, &config.depth_noise);
+  return config;
+}
 
 /// The images of frames 0..frames-1 of `sequence`: rendered, or read from
 /// $DSLAM_TEST_SCENES/<name>_s<seed>.bin when the environment names that folder (scripts/test.sh sets
@@ -56,6 +65,7 @@ inline RenderedSequence RenderSequence(const std::string& name, int frames, int 
   const synth::SyntheticSequence sequence(synth::MakeScenario(name, seed));
   std::vector<CachedImages> images = SceneImages(sequence, name, frames, seed, cache);
   RenderedSequence out;
+  out.sensor = sequence.scenario().sensor;
   for (int i = 0; i < frames; ++i) {
     RgbdFrame frame;
     frame.stamp_s = sequence.StampOf(i);

@@ -153,6 +153,22 @@ std::string ReadAll(const std::string& path) {
   return s.str();
 }
 
+/// A structured-light scene states no depth noise: like a real camera, the defaults model it.
+TEST(SynthWriter, StructuredLightCameraStatesNoDepthNoise) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "dslam_synth_kinect_camera.yaml").string();
+  WriteCameraYaml(path, MakeScenario("static_room_kinect", 1).sensor);
+  const CameraYaml camera = LoadCameraYaml(path);
+  EXPECT_FALSE(camera.depth_sigma_d_quadratic.has_value());
+  EXPECT_FALSE(camera.depth_sigma_d_constant_m.has_value());
+  DepthNoiseConfig noise;
+  UseSensorDepthNoise(MakeScenario("static_room_kinect", 1).sensor, &noise);
+  EXPECT_EQ(noise.sigma_d_quadratic, DepthNoiseConfig().sigma_d_quadratic);
+  UseSensorDepthNoise(MakeScenario("static_room", 1).sensor, &noise);
+  EXPECT_EQ(noise.sigma_d_quadratic,
+            MakeScenario("static_room", 1).sensor.depth_sigma_quadratic_per_m);
+}
+
 TEST(SynthWriter, TumLayoutRoundTripsThroughTumDataset) {
   const std::string root = (std::filesystem::temp_directory_path() / "dslam_synth_test").string();
   std::filesystem::remove_all(root);
@@ -164,6 +180,11 @@ TEST(SynthWriter, TumLayoutRoundTripsThroughTumDataset) {
   ASSERT_EQ(dataset.size(), 3u);
   EXPECT_DOUBLE_EQ(dataset.camera_yaml().camera->fx(), 525.0);
   EXPECT_DOUBLE_EQ(dataset.camera_yaml().depth_scale, 5000.0);
+  // The Gaussian depth noise the renderer drew from, stated for the tracker.
+  EXPECT_EQ(dataset.camera_yaml().depth_sigma_d_quadratic,
+            sequence.scenario().sensor.depth_sigma_quadratic_per_m);
+  EXPECT_EQ(dataset.camera_yaml().depth_sigma_d_constant_m,
+            sequence.scenario().sensor.depth_sigma_constant_m);
   const SyntheticFrame f = sequence.RenderFrame(2);
   const RgbdFrame loaded = dataset.LoadFrame(2);
   EXPECT_EQ(loaded.stamp_s, f.frame.stamp_s);

@@ -28,7 +28,7 @@ using Rendered = test::RenderedSequence;
 using test::RenderSequence;
 
 RunResult RunOdometry(const Rendered& rendered, bool static_points) {
-  Config config;
+  Config config = test::SensorConfig(rendered);
   config.static_points.enabled = static_points;
   Odometry odometry(config);
   RunResult out;

@@ -4,10 +4,12 @@
 
 #include <istream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dslam/core/camera.h"
+#include "dslam/core/features_config.h"
 #include "dslam/core/rgbd_frame.h"
 
 namespace dslam {
@@ -20,14 +22,28 @@ struct CameraYaml {
   std::shared_ptr<const PinholeCamera> camera;  ///< intrinsics and distortion of the colour camera
   double depth_scale = 5000.0;  ///< depth PNG units per metre (TUM/Bonn: 5000), in [1, 1e6]
   GroundTruthCorrection groundtruth_correction = GroundTruthCorrection::kNone;
+  /// The depth sensor's noise when the file states it (keys depth_sigma_d_quadratic [1/m] and
+  /// depth_sigma_d_constant_m [m], both or neither, each in [0, 0.1]): sigma_d = a d^2 + b of one
+  /// measurement, independent from pixel to pixel and frame to frame. dslam_synth writes it for
+  /// its Gaussian depth noise; real cameras leave it out (the defaults of depth_noise model them).
+  std::optional<double> depth_sigma_d_quadratic;   ///< [1/m] a
+  std::optional<double> depth_sigma_d_constant_m;  ///< [m] b
 };
 
 /// Reads camera.yaml (keys width height fx fy cx cy, optional k1 k2 p1 p2 k3 depth_scale
-/// groundtruth_correction none|bonn). Throws std::runtime_error naming the file and the key.
+/// groundtruth_correction none|bonn, depth_sigma_d_quadratic and depth_sigma_d_constant_m).
+/// Throws std::runtime_error naming the file and the key.
 CameraYaml LoadCameraYaml(const std::string& path);
 
 /// Same as LoadCameraYaml, from the file's text; `name` (the file's name) starts each message.
 CameraYaml ParseCameraYaml(const std::string& yaml_text, const std::string& name);
+
+/// The camera.yaml a dataset run reads: `camera_yaml_path`, or the folder's when that is empty.
+std::string CameraYamlPath(const std::string& folder, const std::string& camera_yaml_path);
+
+/// Sets depth_noise.sigma_d_quadratic and sigma_d_constant_m to the noise `camera` states;
+/// leaves `depth_noise` as it is when the file states none. Returns whether it set them.
+bool UseCameraDepthNoise(const CameraYaml& camera, DepthNoiseConfig* depth_noise);
 
 /// One line of rgb.txt / depth.txt / mask.txt: a stamp and a path relative to the folder.
 struct StampedFile {

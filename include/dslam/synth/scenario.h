@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "dslam/core/camera.h"
+#include "dslam/core/features_config.h"
 #include "dslam/synth/actors.h"
 #include "dslam/synth/camera_motion.h"
 #include "dslam/synth/geometry.h"
@@ -89,6 +90,11 @@ std::vector<std::pair<std::string, std::string>> ScenarioNames();
 
 /// Builds the named scenario; throws std::invalid_argument for an unknown name.
 Scenario MakeScenario(const std::string& name, uint32_t seed);
+
+/// The tracker's depth model for `sensor`: its Gaussian depth noise (sigma_d = a d^2 + b,
+/// independent per pixel), which WriteCameraYaml states in camera.yaml. A structured-light sensor
+/// leaves `depth_noise` unchanged: like a real camera, it is modelled by depth_noise's defaults.
+void UseSensorDepthNoise(const SensorParams& sensor, DepthNoiseConfig* depth_noise);
 
 /// The static part of the scene (room and furniture), which depends on the seed only.
 SceneGeometry BuildStaticScene(const RoomParams& room, uint32_t seed);
