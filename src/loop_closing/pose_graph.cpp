@@ -83,9 +83,8 @@ Eigen::Isometry3d ToIsometry(const NodeState& state) {
 }
 
 void CheckGraph(const PoseGraph& graph, const PoseGraphOptions& options) {
-  if (options.max_iterations < 0 || options.num_threads < 1 || !(options.loop_loss_scale > 0)) {
-    throw std::invalid_argument(
-        "pose graph: options need max_iterations >= 0, num_threads >= 1, loop_loss_scale > 0");
+  if (options.max_iterations < 0 || options.num_threads < 1) {
+    throw std::invalid_argument("pose graph: options need max_iterations >= 0, num_threads >= 1");
   }
   bool any_fixed = false;
   for (const auto& [id, node] : graph.nodes) any_fixed = any_fixed || node.fixed;
@@ -103,31 +102,16 @@ void CheckGraph(const PoseGraph& graph, const PoseGraphOptions& options) {
   }
 }
 
-std::unique_ptr<ceres::LossFunction> MakeLoopLoss(const PoseGraphOptions& options) {
-  switch (options.loop_loss) {
-    case PoseGraphLoss::kHuber:
-      return std::make_unique<ceres::HuberLoss>(options.loop_loss_scale);
-    case PoseGraphLoss::kCauchy:
-      return std::make_unique<ceres::CauchyLoss>(options.loop_loss_scale);
-    case PoseGraphLoss::kNone:
-      break;
-  }
-  return nullptr;
-}
-
 ceres::Solver::Summary Solve(const PoseGraph& graph, const PoseGraphOptions& options,
                              std::map<int, NodeState>* states) {
   ceres::Problem::Options problem_options;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  const std::unique_ptr<ceres::LossFunction> loop_loss = MakeLoopLoss(options);
   ceres::EigenQuaternionManifold quaternion_manifold;
   for (const PoseGraphEdge& edge : graph.edges) {
     NodeState& a = states->at(edge.id_a);
     NodeState& b = states->at(edge.id_b);
-    ceres::LossFunction* loss = edge.kind == PoseGraphEdgeKind::kLoop ? loop_loss.get() : nullptr;
-    problem.AddResidualBlock(RelativePoseResidual::Create(edge).release(), loss,
+    problem.AddResidualBlock(RelativePoseResidual::Create(edge).release(), nullptr,
                              a.q_world_camera.coeffs().data(), a.t_world_camera.data(),
                              b.q_world_camera.coeffs().data(), b.t_world_camera.data());
   }
@@ -212,12 +196,6 @@ PoseGraphResult OptimisePoseGraph(const PoseGraph& graph, const PoseGraphOptions
   for (const auto& [id, state] : states) {
     const PoseGraphNode& node = graph.nodes.at(id);
     result.T_world_camera[id] = node.fixed ? node.T_world_camera : ToIsometry(state);
-  }
-  for (const PoseGraphEdge& edge : graph.edges) {
-    result.edge_residual_norms.push_back(PoseGraphResidual(edge,
-                                                           result.T_world_camera.at(edge.id_a),
-                                                           result.T_world_camera.at(edge.id_b))
-                                             .norm());
   }
   return result;
 }

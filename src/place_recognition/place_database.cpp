@@ -40,7 +40,7 @@ void PlaceDatabase::Clear() {
 }
 
 std::unordered_map<int, PlaceDatabase::Sums> PlaceDatabase::Accumulate(
-    const BowVector& query, bool score, const std::function<bool(int id)>& exclude) const {
+    const BowVector& query, const std::function<bool(int id)>& exclude) const {
   BowVector normalised = query;
   NormaliseL1(&normalised);
   std::unordered_map<int, Sums> sums;
@@ -55,7 +55,7 @@ std::unordered_map<int, PlaceDatabase::Sums> PlaceDatabase::Accumulate(
       if (s.excluded) continue;
       ++s.shared_words;
       // For L1-normalised non-negative vectors ScoreL1 is the sum of min(x, y) over the words.
-      if (score) s.score += std::min(weight, p.weight);
+      s.score += std::min(weight, p.weight);
     }
   }
   return sums;
@@ -64,7 +64,7 @@ std::unordered_map<int, PlaceDatabase::Sums> PlaceDatabase::Accumulate(
 std::vector<PlaceCandidate> PlaceDatabase::Query(const BowVector& query,
                                                  const PlaceQueryOptions& options) const {
   std::vector<PlaceCandidate> candidates;
-  for (const auto& [id, s] : Accumulate(query, true, options.exclude)) {
+  for (const auto& [id, s] : Accumulate(query, options.exclude)) {
     if (s.excluded || s.shared_words < options.min_shared_words || s.score < options.min_score)
       continue;
     candidates.push_back({id, std::min(1.0, s.score), s.shared_words});
@@ -76,20 +76,6 @@ std::vector<PlaceCandidate> PlaceDatabase::Query(const BowVector& query,
   if (options.max_results > 0 && candidates.size() > static_cast<size_t>(options.max_results)) {
     candidates.resize(options.max_results);
   }
-  return candidates;
-}
-
-std::vector<PlaceCandidate> PlaceDatabase::SharedWords(
-    const BowVector& query, const std::function<bool(int id)>& exclude) const {
-  std::vector<PlaceCandidate> candidates;
-  for (const auto& [id, s] : Accumulate(query, false, exclude)) {
-    if (s.excluded) continue;
-    candidates.push_back({id, 0.0, s.shared_words});
-  }
-  std::sort(
-      candidates.begin(), candidates.end(), [](const PlaceCandidate& a, const PlaceCandidate& b) {
-        return a.shared_words != b.shared_words ? a.shared_words > b.shared_words : a.id < b.id;
-      });
   return candidates;
 }
 

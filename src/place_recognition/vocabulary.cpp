@@ -19,23 +19,13 @@ void CheckDescriptors(const cv::Mat& descriptors, const char* where) {
 }  // namespace
 
 BowVector Vocabulary::Transform(const cv::Mat& descriptors) const {
-  return Transform(descriptors, 0, nullptr);
-}
-
-BowVector Vocabulary::Transform(const cv::Mat& descriptors, int level_up,
-                                FeatureVector* features) const {
   if (empty()) throw std::logic_error("Vocabulary::Transform: empty vocabulary");
   CheckDescriptors(descriptors, "Vocabulary::Transform");
-  if (features != nullptr) features->clear();
-  const int feature_depth = std::max(0, tree_->levels - level_up);
   BowVector words;
   for (int row = 0; row < descriptors.rows; ++row) {
-    std::uint32_t node = 0;
-    const std::uint32_t word =
-        Descend(*tree_, descriptors.ptr<std::uint8_t>(row), feature_depth, &node);
+    const std::uint32_t word = Descend(*tree_, descriptors.ptr<std::uint8_t>(row));
     const double idf = tree_->weight[tree_->node_of_word[word]];
     if (idf > 0.0) words[word] += idf;
-    if (features != nullptr) (*features)[node].push_back(row);
   }
   NormaliseL1(&words);
   return words;
@@ -43,7 +33,7 @@ BowVector Vocabulary::Transform(const cv::Mat& descriptors, int level_up,
 
 WordId Vocabulary::WordOf(const std::uint8_t* descriptor) const {
   if (empty()) throw std::logic_error("Vocabulary::WordOf: empty vocabulary");
-  return Descend(*tree_, descriptor, 0, nullptr);
+  return Descend(*tree_, descriptor);
 }
 
 int Vocabulary::branching() const { return empty() ? 0 : tree_->branching; }

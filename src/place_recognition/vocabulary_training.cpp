@@ -63,7 +63,7 @@ void SetIdf(const std::vector<cv::Mat>& images, VocabularyTree* tree) {
   std::vector<std::uint32_t> last_image(tree->node_of_word.size(), kNoNode);
   for (size_t i = 0; i < images.size(); ++i) {
     for (int row = 0; row < images[i].rows; ++row) {
-      const std::uint32_t word = Descend(*tree, images[i].ptr<std::uint8_t>(row), 0, nullptr);
+      const std::uint32_t word = Descend(*tree, images[i].ptr<std::uint8_t>(row));
       if (last_image[word] == i) continue;
       last_image[word] = static_cast<std::uint32_t>(i);
       ++images_with[word];

@@ -43,11 +43,8 @@ std::string VocabularyTree::Index() {
   return node_of_word.empty() ? "the tree has no word" : "";
 }
 
-std::uint32_t Descend(const VocabularyTree& tree, const std::uint8_t* d, int feature_depth,
-                      std::uint32_t* feature_node) {
+std::uint32_t Descend(const VocabularyTree& tree, const std::uint8_t* d) {
   std::uint32_t node = 0;
-  int depth = 0;
-  if (feature_node != nullptr) *feature_node = 0;
   while (tree.num_children[node] > 0) {
     const std::uint32_t first = tree.first_child[node];
     std::uint32_t best = first;
@@ -60,7 +57,6 @@ std::uint32_t Descend(const VocabularyTree& tree, const std::uint8_t* d, int fea
       }
     }
     node = best;
-    if (feature_node != nullptr && ++depth <= feature_depth) *feature_node = node;
   }
   return tree.word_of_node[node];
 }

@@ -42,9 +42,8 @@ struct VocabularyTree {
 /// The file's bytes from offset 20 to the end (vocabulary.h): parameters and nodes.
 std::string SerialiseBody(const VocabularyTree& tree);
 
-/// The word of one descriptor, and in `feature_node` (when not null) its node at depth
-/// `feature_depth` on the way down (its word's node when that is shallower).
-std::uint32_t Descend(const VocabularyTree& tree, const std::uint8_t* d, int feature_depth,
-                      std::uint32_t* feature_node);
+/// The word of one descriptor: down the tree to the nearest child (Hamming distance; ties: the
+/// first) until a leaf.
+std::uint32_t Descend(const VocabularyTree& tree, const std::uint8_t* d);
 
 }  // namespace dslam

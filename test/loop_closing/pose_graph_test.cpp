@@ -1,6 +1,6 @@
 // Known-answer tests of the pose graph (OptimisePoseGraph) on rings of keyframes
 // (loop_closing/ring_graph.h): drift removed by a loop edge, truth left alone, fixed nodes held,
-// bad input rejected, a wrong loop edge contained by the robust loss and exposed by its residual.
+// bad input rejected.
 #include "dslam/loop_closing/pose_graph.h"
 
 #include <cmath>
@@ -55,7 +55,6 @@ TEST(PoseGraph, PerfectMeasurementsLeaveTheTruth) {
   const test::PoseError after = test::MaxError(result.T_world_camera, ring);
   EXPECT_LT(after.translation_m, 1e-9);
   EXPECT_LT(after.rotation_rad, 1e-9);
-  for (const double norm : result.edge_residual_norms) EXPECT_LT(norm, 1e-6);
 }
 
 TEST(PoseGraph, FixedNodesDoNotMove) {
@@ -121,45 +120,6 @@ TEST(PoseGraph, ResidualIsTheRelativePoseErrorInFrameA) {
   edge = MakePoseGraphEdge(PoseGraph{{{1, {T_world_a, true}}, {2, {T_world_b, false}}}, {}}, 1, 2,
                            PoseGraphEdgeKind::kCovisibility, PoseGraphInformation::Identity());
   EXPECT_LT(PoseGraphResidual(edge, T_world_a, T_world_b).norm(), 1e-12);
-}
-
-// The ring with a second, wrong loop edge 20 -> 0 whose measurement is 1 m off.
-PoseGraph RingWithWrongLoop(const test::Ring& ring) {
-  PoseGraph graph = ring.graph;
-  PoseGraphEdge wrong = graph.edges.back();
-  wrong.id_a = 20;
-  wrong.T_a_b = ring.T_world_camera_true[20].inverse() * ring.T_world_camera_true[0];
-  wrong.T_a_b.translation() += Eigen::Vector3d(1.0, 0.0, 0.0);
-  graph.edges.push_back(wrong);
-  return graph;
-}
-
-TEST(PoseGraph, RobustLossContainsAWrongLoopEdgeAndItsResidualExposesIt) {
-  const test::Ring ring = test::MakeRing(test::DriftingRingOptions());
-  const PoseGraph graph = RingWithWrongLoop(ring);
-  const PoseGraphResult plain = OptimisePoseGraph(graph);
-  PoseGraphOptions options;
-  options.loop_loss = PoseGraphLoss::kCauchy;
-  const PoseGraphResult robust = OptimisePoseGraph(graph, options);
-  ASSERT_TRUE(plain.success);
-  ASSERT_TRUE(robust.success);
-  const test::PoseError plain_error = test::MaxError(plain.T_world_camera, ring);
-  const test::PoseError robust_error = test::MaxError(robust.T_world_camera, ring);
-  EXPECT_LT(robust_error.translation_m, plain_error.translation_m / 5);
-  EXPECT_LT(robust_error.translation_m, 0.15);
-  // Either way the wrong edge (the last) has the largest residual of all edges.
-  for (const PoseGraphResult* result : {&plain, &robust}) {
-    const std::vector<double>& norms = result->edge_residual_norms;
-    ASSERT_EQ(norms.size(), graph.edges.size());
-    const auto worst = std::max_element(norms.begin(), norms.end());
-    EXPECT_EQ(worst - norms.begin(), static_cast<long>(graph.edges.size()) - 1);
-  }
-  // A scale of 1 (below the correct loop edge's residual at the chained poses) rejects the
-  // correct loop edge too: its residual stays large and the drift stays.
-  options.loop_loss_scale = 1.0;
-  const PoseGraphResult too_robust = OptimisePoseGraph(graph, options);
-  EXPECT_GT(too_robust.edge_residual_norms[graph.edges.size() - 2], 10.0);
-  EXPECT_GT(test::MaxError(too_robust.T_world_camera, ring).rotation_rad, 3.0 * kDegree);
 }
 
 TEST(PoseGraph, SameResultOnEveryRun) {

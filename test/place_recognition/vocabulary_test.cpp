@@ -82,22 +82,6 @@ TEST(VocabularyTest, TransformScoresItselfOneAndANoisyCopyAboveAnUnrelatedImage)
   EXPECT_NEAR(sum, 1.0, 1e-12);
 }
 
-TEST(VocabularyTest, FeatureVectorGroupsEveryDescriptorUnderOneNode) {
-  std::mt19937 rng(5);
-  const cv::Mat centres = test::RandomDescriptors(200, &rng);
-  const Vocabulary vocabulary = Vocabulary::Train(PlantedImages(20, centres, &rng), {5, 3, 10, 1});
-  const cv::Mat image = test::ImageFromCentres(centres, 100, 3, &rng);
-  FeatureVector features;
-  EXPECT_EQ(vocabulary.Transform(image, 1, &features), vocabulary.Transform(image));
-  size_t count = 0;
-  for (const auto& [node, rows] : features) count += rows.size();
-  EXPECT_EQ(count, 100u);
-  EXPECT_LE(features.size(), 25u);  // level_up 1: nodes at depth 2, at most 5^2
-  vocabulary.Transform(image, 3, &features);
-  ASSERT_EQ(features.size(), 1u);  // depth 0: the root
-  EXPECT_EQ(features.begin()->first, 0u);
-}
-
 TEST(VocabularyTest, TrainingOnOrbFeaturesIsByteIdentical) {
   const PinholeCamera camera = test::TestCamera();
   std::vector<cv::Mat> images;

@@ -44,19 +44,10 @@ struct PoseGraph {
   std::vector<PoseGraphEdge> edges;
 };
 
-/// The robust loss on loop edges (other edges have none). Its scale is in whitened units: a
-/// loop edge's residual norm sqrt(r^T Info r) [-] beyond it is down-weighted.
-enum class PoseGraphLoss { kNone, kHuber, kCauchy };
-
 /// How OptimisePoseGraph solves.
 struct PoseGraphOptions {
   int max_iterations = 100;  ///< Levenberg-Marquardt iterations at most
   int num_threads = 1;       ///< Ceres threads; 1 gives the same result on every run
-  PoseGraphLoss loop_loss = PoseGraphLoss::kNone;  ///< robust loss of kLoop edges
-  /// [-] whitened residual norm where the loss starts down-weighting. 10: with kCauchy on the
-  /// drifting test ring (test/loop_closing/pose_graph_test.cpp), a loop edge 1 m off moves the
-  /// poses about 1/8 as far as without the loss; at 1 the correct loop edge is rejected too.
-  double loop_loss_scale = 10.0;
 };
 
 /// The corrected poses and the solver's account of the solve.
@@ -65,11 +56,8 @@ struct PoseGraphResult {
   /// Every node's pose after the solve [m]; a fixed node's is its input, bit for bit.
   std::map<int, Eigen::Isometry3d> T_world_camera;
   int iterations = 0;         ///< Levenberg-Marquardt steps, successful and unsuccessful
-  double initial_cost = 0.0;  ///< [-] 1/2 sum of (robustified) squared whitened residuals
+  double initial_cost = 0.0;  ///< [-] 1/2 sum of squared whitened residuals
   double final_cost = 0.0;    ///< [-] the same after the solve
-  /// [-] per edge (the graph's order), sqrt(r^T Info r) at the corrected poses, without the
-  /// robust loss: a loop edge that disagrees with the rest of the graph stands out here.
-  std::vector<double> edge_residual_norms;
 };
 
 /// The node of keyframe `id`. Throws std::invalid_argument naming the id when the graph has none.
@@ -95,8 +83,7 @@ Eigen::Matrix<double, 6, 1> PoseGraphResidual(const PoseGraphEdge& edge,
                                               const Eigen::Isometry3d& T_world_a,
                                               const Eigen::Isometry3d& T_world_b);
 
-/// Minimises the sum of squared PoseGraphResidual over the edges (loop edges through
-/// `options.loop_loss`), each node's pose a quaternion on Ceres' Eigen quaternion manifold and a
+/// Minimises the sum of squared PoseGraphResidual over the edges, each node's pose a quaternion on Ceres' Eigen quaternion manifold and a
 /// translation, the fixed nodes held. Nodes without edges keep their pose. Throws
 /// std::invalid_argument when no node is fixed, when an edge names a node missing from the graph
 /// or joins a node to itself (the message names the id), when an edge's information is not

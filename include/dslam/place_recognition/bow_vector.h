@@ -16,10 +16,6 @@ using NodeId = std::uint32_t;
 /// Word -> weight [-] (tf-idf) of one image, sorted by word; words of weight 0 are left out.
 using BowVector = std::map<WordId, double>;
 
-/// Vocabulary node -> indices (rows of the descriptor matrix) of the features below that node,
-/// ascending; sorted by node. Two images' features need only be matched within one node.
-using FeatureVector = std::map<NodeId, std::vector<int>>;
-
 /// Divides every weight by the sum of their absolute values (nothing when that sum is 0).
 void NormaliseL1(BowVector* v);
 

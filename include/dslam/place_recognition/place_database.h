@@ -45,12 +45,6 @@ class PlaceDatabase {
   std::vector<PlaceCandidate> Query(const BowVector& query,
                                     const PlaceQueryOptions& options = {}) const;
 
-  /// For every image sharing a word with `query` (and not excluded): its id and the number of
-  /// shared words in PlaceCandidate::shared_words, score 0; most shared words first (ties: lower
-  /// id). ORB-SLAM2 scores only the images sharing at least 0.8 times the largest count.
-  std::vector<PlaceCandidate> SharedWords(const BowVector& query,
-                                          const std::function<bool(int id)>& exclude = {}) const;
-
  private:
   struct Posting {
     int id;         // image
@@ -61,7 +55,9 @@ class PlaceDatabase {
     int shared_words = 0;
     bool excluded = false;  // the query's exclude said so (asked once per image)
   };
-  std::unordered_map<int, Sums> Accumulate(const BowVector& query, bool score,
+  /// Per image sharing a word with `query`: its score and shared words (none for an excluded
+  /// image, whose `exclude` is asked once).
+  std::unordered_map<int, Sums> Accumulate(const BowVector& query,
                                            const std::function<bool(int id)>& exclude) const;
 
   std::unordered_map<int, BowVector> images_;               // id -> normalised words

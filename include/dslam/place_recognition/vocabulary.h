@@ -72,10 +72,6 @@ class Vocabulary {
   /// std::logic_error on an empty vocabulary.
   BowVector Transform(const cv::Mat& descriptors) const;
 
-  /// Transform, and in `features` (when not null; cleared first) each descriptor's node at depth
-  /// max(0, levels() - level_up) on its way down (its word when that is shallower).
-  BowVector Transform(const cv::Mat& descriptors, int level_up, FeatureVector* features) const;
-
   /// The word of one descriptor (32 bytes at `descriptor`).
   WordId WordOf(const std::uint8_t* descriptor) const;
 
