@@ -54,7 +54,7 @@ class KeyFrameObserver {
   /// `added`: keyframes made since the previous call, oldest first (none when only the poses
   /// changed). `window`: every keyframe in Slam's window now, oldest first, with its current
   /// pose (refined by local mapping when the back end is on); a keyframe absent from it left the
-  /// window and will not move again.
+  /// window: local mapping no longer moves it, a loop correction still may (OnCorrection).
   virtual void OnKeyFrames(const std::vector<KeyFrameRecord>& added,
                            const std::vector<KeyFramePose>& window) = 0;
 
