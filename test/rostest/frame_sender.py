@@ -65,9 +65,16 @@ class Node:
         return [len(msg.poses) for msg in self.rec.messages("path")]
 
     def wait_connected(self):
+        """Waits until the node subscribes to the camera topics and `status` (which send() waits
+        for) has its publisher, up to 30 s in all: rospy connects in the background, and a status
+        published before its subscriber connected is never received. (Other recorded topics may
+        have no publisher in a test's setting, e.g. /tf with publish_tf false.)"""
         deadline = time.time() + 30.0
-        while any(p.get_num_connections() == 0 for p in self.pubs) and time.time() < deadline:
+        while time.time() < deadline and (any(p.get_num_connections() == 0 for p in self.pubs) or
+                                          self.subs[0].get_num_connections() == 0):
             time.sleep(0.1)
+        if self.subs[0].get_num_connections() == 0:
+            raise AssertionError("no publisher of %s within 30 s" % self.subs[0].name)
 
     def send(self, messages, expect_status=True):
         """Publishes one set; returns its status message (waits up to 20 s)."""
