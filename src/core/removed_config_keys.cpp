@@ -1,90 +1,108 @@
 #include "dslam/core/removed_config_keys.h"
 
-#include <sstream>
+#include <iterator>
 
 namespace dslam {
 namespace {
 
-// One removed parameter per entry, "section.name: why it went", continued on lines that start with
-// two spaces. A losing option names the BENCHMARKS.md section that measured it; a key that no
-// measurement changed names the constant of the code that replaced it.
-constexpr char kRemovedKeys[] = R"(
-depth_noise.min_valid_window_pixels: no measurement changed it; now 5 (MixDepth)
-features.cell_size_px: no measurement changed it; now 30 px (orb_pyramid.cpp)
-pose.solver: the Levenberg-Marquardt solver always runs; Ceres gave the same trajectories, slower
-  (BENCHMARKS.md, "Motion-only BA solver"), and stays the tests' reference
-pose.ransac_max_iterations: no measurement changed it; now kRansacMaxHypotheses 300
-pose.ransac_confidence: no measurement changed it; now kRansacConfidence 0.999
-pose.ransac_extra_sigma_m: no measurement changed it; now kRansacExtraSigmaM 0.01 m
-static_points.max_rounds: no measurement changed it; now 4 (CullingOptions)
-static_points.prior_sigma_m: no measurement changed it; now 1 m (CullingOptions)
-static_points.min_graph_points: no measurement changed it; now kMinGraphPoints 8
-static_points.min_component_points: no measurement changed it; now 4 (StaticSelectionOptions)
-tracking.unmarked_search_radius_px: tried, off: BENCHMARKS.md, "Unmarked points searched wider"
-tracking.unmarked_max_offset_m: tried, off: BENCHMARKS.md, "Unmarked points searched wider"
-tracking.search_min_depth_m: no measurement changed it; now 0.1 m (odometry_steps.cpp)
-tracking.init_min_points_factor: no measurement changed it; now 2 (odometry.cpp)
-tracking.descriptor_observations: tried, off: BENCHMARKS.md, "Map point descriptors refined from
-  their observations"
-tracking.cull_min_visible: no measurement changed it; now 8 (odometry_steps.cpp)
-tracking.robust_pose_points: the marked matches always vote first, then all: `all` gave the same
-  trajectories, `marked` lost frames (BENCHMARKS.md, "Back end, part 1")
-tracking.relocalisation_max_distance_bits: no measurement changed it; now 64
-  (DescriptorMatchRules)
-tracking.relocalisation_ratio: no measurement changed it; now 0.8 (DescriptorMatchRules)
-backend.spd_enabled: always on with static_points.enabled: local BA alone lost (`git show
-  0da3eda:BENCHMARKS.md`, "Back end, part 2")
-backend.spd_min_covisible_points: no measurement changed it; now 20 (window_static_points.cpp)
-backend.ba_min_keyframes: no measurement changed it; now 2
-backend.ba_min_point_keyframes: now 2: 3 was tried and not adopted (BENCHMARKS.md, "Back end on or
-  off, seeds 1-5")
-backend.ba_min_keyframe_points: no measurement changed it; now 10
-backend.ba_max_iterations: no measurement changed it; now 10
-backend.ba_huber_delta: merged into pose.huber_delta_depth
-backend.ba_chi2: merged into pose.chi2_depth
-dynamic_mask.depth_change_seeds: always on: BENCHMARKS.md, "Depth-change seeds of the dynamic
-  mask"
-dynamic_mask.depth_change_stride: no measurement changed it; now kDepthChangeStride 2
-objects.min_cells: no measurement changed it; now 20 (object_tracker.cpp)
-objects.min_velocity_points: no measurement changed it; now 3 (object_tracker.cpp)
-objects.split_min_points: no measurement changed it; now kSplitMinPoints 5
-objects.carry_points: always on: BENCHMARKS.md, "Lost points carried by optical flow, stacked
-  regions joined"
-objects.join_stacked_regions: always on: BENCHMARKS.md, "Lost points carried by optical flow,
-  stacked regions joined"
-objects.carry_window_px: no measurement changed it; now PointCarrier::kWindowPx 11
-objects.carry_levels: no measurement changed it; now PointCarrier::kLevels 3
-objects.carry_max_error_px: no measurement changed it; now PointCarrier::kMaxErrorPx 0.5 px
-objects.carry_max_points: no measurement changed it; now PointCarrier::kMaxPoints 500
-map.max_depth_m: merged into depth_noise.max_depth_m
-map.free_space_min_misses: no measurement changed it; now 1 (FreeSpaceTolerance)
-)";
-
-std::vector<RemovedConfigKey> ParseRemovedKeys(const std::string& text) {
-  std::vector<RemovedConfigKey> keys;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    if (line.rfind("  ", 0) == 0) {
-      keys.back().reason += line.substr(1);  // one space between the parts
-      continue;
-    }
-    const size_t dot = line.find('.'), colon = line.find(": ");
-    keys.push_back(
-        {line.substr(0, dot), line.substr(dot + 1, colon - dot - 1), line.substr(colon + 2)});
-  }
-  return keys;
-}
+// One removed parameter per entry: section, name, why it went. A losing option names the
+// BENCHMARKS.md section that measured it; a key that no measurement changed names the constant of
+// the code that replaced it.
+constexpr RemovedConfigKey kRemovedKeys[] = {
+    {"depth_noise", "min_valid_window_pixels",
+     "no measurement changed it; now 5 (MixDepth)"},
+    {"features", "cell_size_px",
+     "no measurement changed it; now 30 px (orb_pyramid.cpp)"},
+    {"pose", "solver",
+     "the Levenberg-Marquardt solver always runs; Ceres gave the same trajectories, slower "
+     "(BENCHMARKS.md, \"Motion-only BA solver\"), and stays the tests' reference"},
+    {"pose", "ransac_max_iterations",
+     "no measurement changed it; now kRansacMaxHypotheses 300"},
+    {"pose", "ransac_confidence",
+     "no measurement changed it; now kRansacConfidence 0.999"},
+    {"pose", "ransac_extra_sigma_m",
+     "no measurement changed it; now kRansacExtraSigmaM 0.01 m"},
+    {"static_points", "max_rounds",
+     "no measurement changed it; now 4 (CullingOptions)"},
+    {"static_points", "prior_sigma_m",
+     "no measurement changed it; now 1 m (CullingOptions)"},
+    {"static_points", "min_graph_points",
+     "no measurement changed it; now kMinGraphPoints 8"},
+    {"static_points", "min_component_points",
+     "no measurement changed it; now 4 (StaticSelectionOptions)"},
+    {"tracking", "unmarked_search_radius_px",
+     "tried, off: BENCHMARKS.md, \"Unmarked points searched wider\""},
+    {"tracking", "unmarked_max_offset_m",
+     "tried, off: BENCHMARKS.md, \"Unmarked points searched wider\""},
+    {"tracking", "search_min_depth_m",
+     "no measurement changed it; now 0.1 m (odometry_steps.cpp)"},
+    {"tracking", "init_min_points_factor",
+     "no measurement changed it; now 2 (odometry.cpp)"},
+    {"tracking", "descriptor_observations",
+     "tried, off: BENCHMARKS.md, \"Map point descriptors refined from their observations\""},
+    {"tracking", "cull_min_visible",
+     "no measurement changed it; now 8 (odometry_steps.cpp)"},
+    {"tracking", "robust_pose_points",
+     "the marked matches always vote first, then all: `all` gave the same trajectories, "
+     "`marked` lost frames (BENCHMARKS.md, \"Back end, part 1\")"},
+    {"tracking", "relocalisation_max_distance_bits",
+     "no measurement changed it; now 64 (DescriptorMatchRules)"},
+    {"tracking", "relocalisation_ratio",
+     "no measurement changed it; now 0.8 (DescriptorMatchRules)"},
+    {"backend", "spd_enabled",
+     "always on with static_points.enabled: local BA alone lost (`git show "
+     "0da3eda:BENCHMARKS.md`, \"Back end, part 2\")"},
+    {"backend", "spd_min_covisible_points",
+     "no measurement changed it; now 20 (window_static_points.cpp)"},
+    {"backend", "ba_min_keyframes",
+     "no measurement changed it; now 2"},
+    {"backend", "ba_min_point_keyframes",
+     "now 2: 3 was tried and not adopted (BENCHMARKS.md, \"Back end on or off, seeds 1-5\")"},
+    {"backend", "ba_min_keyframe_points",
+     "no measurement changed it; now 10"},
+    {"backend", "ba_max_iterations",
+     "no measurement changed it; now 10"},
+    {"backend", "ba_huber_delta",
+     "merged into pose.huber_delta_depth"},
+    {"backend", "ba_chi2",
+     "merged into pose.chi2_depth"},
+    {"dynamic_mask", "depth_change_seeds",
+     "always on: BENCHMARKS.md, \"Depth-change seeds of the dynamic mask\""},
+    {"dynamic_mask", "depth_change_stride",
+     "no measurement changed it; now kDepthChangeStride 2"},
+    {"objects", "min_cells",
+     "no measurement changed it; now 20 (object_tracker.cpp)"},
+    {"objects", "min_velocity_points",
+     "no measurement changed it; now 3 (object_tracker.cpp)"},
+    {"objects", "split_min_points",
+     "no measurement changed it; now kSplitMinPoints 5"},
+    {"objects", "carry_points",
+     "always on: BENCHMARKS.md, \"Lost points carried by optical flow, stacked regions "
+     "joined\""},
+    {"objects", "join_stacked_regions",
+     "always on: BENCHMARKS.md, \"Lost points carried by optical flow, stacked regions "
+     "joined\""},
+    {"objects", "carry_window_px",
+     "no measurement changed it; now PointCarrier::kWindowPx 11"},
+    {"objects", "carry_levels",
+     "no measurement changed it; now PointCarrier::kLevels 3"},
+    {"objects", "carry_max_error_px",
+     "no measurement changed it; now PointCarrier::kMaxErrorPx 0.5 px"},
+    {"objects", "carry_max_points",
+     "no measurement changed it; now PointCarrier::kMaxPoints 500"},
+    {"map", "max_depth_m",
+     "merged into depth_noise.max_depth_m"},
+    {"map", "free_space_min_misses",
+     "no measurement changed it; now 1 (FreeSpaceTolerance)"},
+};
 
 }  // namespace
 
-const std::vector<RemovedConfigKey>& RemovedConfigKeys() {
-  static const std::vector<RemovedConfigKey> kKeys = ParseRemovedKeys(kRemovedKeys);
-  return kKeys;
+RemovedConfigKeyList RemovedConfigKeys() {
+  return RemovedConfigKeyList(kRemovedKeys, std::size(kRemovedKeys));
 }
 
-const RemovedConfigKey* FindRemovedConfigKey(const std::string& section, const std::string& name) {
+const RemovedConfigKey* FindRemovedConfigKey(std::string_view section, std::string_view name) {
   for (const RemovedConfigKey& key : RemovedConfigKeys()) {
     if (section == key.section && name == key.name) return &key;
   }
@@ -92,7 +110,7 @@ const RemovedConfigKey* FindRemovedConfigKey(const std::string& section, const s
 }
 
 std::string RemovedConfigKeyWarning(const std::string& shown, const RemovedConfigKey& key) {
-  return shown + " was removed (" + key.reason + "); its value is ignored";
+  return shown + " was removed (" + std::string(key.reason) + "); its value is ignored";
 }
 
 }  // namespace dslam

@@ -17,6 +17,7 @@
 
 #include "dslam/backend/slam.h"
 #include "support/rendered_sequence.h"
+#include "support/slam_test_access.h"
 
 namespace dslam {
 namespace {
@@ -155,7 +156,7 @@ TEST(KeyFrameObserver, ResetsArriveInOrderWithTheKeyFrames) {
   for (const BackEndMode mode : {BackEndMode::kSynchronous, BackEndMode::kThreaded}) {
     auto first = std::make_shared<Recorder>(), second = std::make_shared<Recorder>();
     Slam slam(WithBackEnd(true), mode, RefinedPoseRecording::kOn, {first, second});
-    slam.HoldBackEnd(true);  // threaded: everything queues, then one delivery in order
+    SlamTestAccess::HoldBackEnd(&slam, true);  // threaded: all queues, then one delivery
     Fed run;
     Feed(&slam, 0, 15, FrameRequest{}, &run);
     std::vector<std::string> expected = run.keyframes;

@@ -14,6 +14,7 @@
 #include "dslam/backend/slam.h"
 #include "support/ate.h"
 #include "support/rendered_sequence.h"
+#include "support/slam_test_access.h"
 
 namespace dslam {
 namespace {
@@ -92,7 +93,7 @@ FrameResult FeedKeyFrames(Slam* slam, int keyframes, int* next_frame) {
 
 TEST(SlamThreads, HeldBackEndQueuesKeyFramesAndCoalescesThem) {
   Slam slam(BackEndOn(), BackEndMode::kThreaded);
-  slam.HoldBackEnd(true);
+  SlamTestAccess::HoldBackEnd(&slam, true);
   int next = 0;
   for (int queued = 1; queued <= 4; ++queued) {
     const FrameResult r = FeedKeyFrames(&slam, 1, &next);
@@ -114,7 +115,7 @@ TEST(SlamThreads, HeldBackEndQueuesKeyFramesAndCoalescesThem) {
 
 TEST(SlamThreads, CompletedRunIsReportedByTheNextFrame) {
   Slam slam(BackEndOn(), BackEndMode::kThreaded);
-  slam.HoldBackEnd(true);
+  SlamTestAccess::HoldBackEnd(&slam, true);
   int next = 0;
   FeedKeyFrames(&slam, 3, &next);
   slam.WaitForBackEnd();  // releases the hold: one run over the window of three, completed
@@ -130,7 +131,7 @@ TEST(SlamThreads, CompletedRunIsReportedByTheNextFrame) {
 
 TEST(SlamThreads, ResetDropsQueuedKeyFrames) {
   Slam slam(BackEndOn(), BackEndMode::kThreaded);
-  slam.HoldBackEnd(true);
+  SlamTestAccess::HoldBackEnd(&slam, true);
   int next = 0;
   EXPECT_EQ(FeedKeyFrames(&slam, 3, &next).backend_thread.backlog, 3);
   slam.Reset(ResetMode::kNewWorld);
@@ -178,22 +179,23 @@ void ExpectPromptDestruction(std::unique_ptr<Slam> slam) {
 
 TEST(SlamThreads, DestructionWithKeyFramesQueued) {
   auto held = std::make_unique<Slam>(BackEndOn(), BackEndMode::kThreaded);
-  held->HoldBackEnd(true);
+  SlamTestAccess::HoldBackEnd(held.get(), true);
   int next = 0;
   EXPECT_EQ(FeedKeyFrames(held.get(), 3, &next).backend_thread.backlog, 3);
   ExpectPromptDestruction(std::move(held));
 
   auto released = std::make_unique<Slam>(BackEndOn(), BackEndMode::kThreaded);
-  released->HoldBackEnd(true);
+  SlamTestAccess::HoldBackEnd(released.get(), true);
   next = 0;
   FeedKeyFrames(released.get(), 3, &next);
-  released->HoldBackEnd(false);  // the run starts (or is about to) while the destructor runs
+  // The run starts (or is about to) while the destructor runs.
+  SlamTestAccess::HoldBackEnd(released.get(), false);
   ExpectPromptDestruction(std::move(released));
 }
 
 TEST(SlamThreads, SynchronousModeReportsEachRunWithItsKeyFrame) {
   Slam slam(BackEndOn(), BackEndMode::kSynchronous);
-  slam.HoldBackEnd(true);  // no effect
+  SlamTestAccess::HoldBackEnd(&slam, true);  // no effect
   int next = 0;
   const FrameResult r = FeedKeyFrames(&slam, 3, &next);
   EXPECT_TRUE(r.backend.ba.ran);  // a window of three: static points seen in two or more
@@ -290,14 +292,15 @@ TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
   constexpr int kWalkingFrames = 60, kInFlightUntil = 30;
   const test::RenderedSequence& walking = test::SharedSequence("walking", kWalkingFrames);
   Slam slam(BackEndOn(), BackEndMode::kThreaded);
-  slam.HoldBackEnd(true);
-  slam.HoldBackEndResults(true);
+  SlamTestAccess::HoldBackEnd(&slam, true);
+  SlamTestAccess::HoldBackEndResults(&slam, true);
   int next = 0, keyframes = 0;
   while (keyframes < 3 && next < kInFlightUntil) {
     keyframes += slam.ProcessFrame(walking.frames[next++]).keyframe;
   }
   ASSERT_EQ(keyframes, 3);
-  slam.HoldBackEnd(false);  // the run over three keyframes starts; its results are held
+  // The run over three keyframes starts; its results are held.
+  SlamTestAccess::HoldBackEnd(&slam, false);
   int in_flight = 0, with_pose = next, delivered = 0, queued = keyframes;
   std::unique_ptr<Map> at_copy;
   std::unique_ptr<SnapshotReader> reader;
@@ -308,11 +311,11 @@ TEST(SlamThreads, MapChangesWhileARunIsInFlight) {
       const Map before_apply = slam.MapSnapshot();
       EXPECT_GT(ChangedPoints(*at_copy, before_apply), 0);
       reader = std::make_unique<SnapshotReader>(&slam);
-      slam.HoldBackEnd(true);  // no later run between the two snapshots
-      slam.HoldBackEndResults(false);
+      SlamTestAccess::HoldBackEnd(&slam, true);  // no later run between the two snapshots
+      SlamTestAccess::HoldBackEndResults(&slam, false);
       delivered += WaitForAppliedRuns(&slam);
       EXPECT_GT(FrontEndUpdatesKept(*at_copy, before_apply, slam.MapSnapshot()), 0);
-      slam.HoldBackEnd(false);
+      SlamTestAccess::HoldBackEnd(&slam, false);
     }
     const FrameResult r = slam.ProcessFrame(walking.frames[next]);
     with_pose += r.has_pose;

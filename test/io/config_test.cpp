@@ -92,12 +92,17 @@ TEST(Config, RemovedKeysAreNotParameters) {
   });
   EXPECT_GE(RemovedConfigKeys().size(), 40u);
   for (const RemovedConfigKey& key : RemovedConfigKeys()) {
-    const std::string name = std::string(key.section) + "." + key.name;
-    EXPECT_TRUE(sections.count(key.section)) << name;
+    const std::string name = std::string(key.section) + "." + std::string(key.name);
+    EXPECT_TRUE(sections.count(std::string(key.section))) << name;
     EXPECT_FALSE(parameters.count(name)) << name;
     EXPECT_EQ(FindRemovedConfigKey(key.section, key.name), &key);
   }
   EXPECT_EQ(FindRemovedConfigKey("tracking", "window_keyframes"), nullptr);
+  const RemovedConfigKey* descriptors =
+      FindRemovedConfigKey("tracking", "descriptor_observations");
+  ASSERT_NE(descriptors, nullptr);
+  EXPECT_EQ(descriptors->reason,
+            "tried, off: BENCHMARKS.md, \"Map point descriptors refined from their observations\"");
 }
 
 TEST(Config, YamlRejectsKeysThatAreNotNames) {

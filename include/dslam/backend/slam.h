@@ -22,7 +22,7 @@
 //   is the back-end thread's alone. A Reset while a job runs increments the generation; the job's
 //   results are then dropped.
 // - Every other public member (Reset, StartInMap, Localising, SetPlaceLookup, WaitForBackEnd,
-//   TakeUnreportedRuns, HoldBackEnd, RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames)
+//   TakeUnreportedRuns, RefinedPoses, MapSnapshot, ReadMap, CorrectKeyFrames; the tests' holds)
 //   takes it; getters return copies, never references into the map. config() is immutable.
 // - Keyframe observers (keyframe_observer.h, given to the constructor; the static map): under the
 //   lock the tracking thread queues each new keyframe (a shallow copy of its images and its point
@@ -135,19 +135,6 @@ class Slam {
   /// end of a threaded run: WaitForBackEnd, then this). Always empty when synchronous.
   std::vector<BackEndStatus> TakeUnreportedRuns();
 
-  /// Threaded: while held, keyframes queue (the backlog grows) and no run starts; releasing
-  /// starts one run for the newest (as when the thread is busy). Lets a caller step through a
-  /// sequence with the map unchanged by the back end, and tests see the queue. No effect when
-  /// synchronous.
-  void HoldBackEnd(bool hold);
-
-  /// Threaded: while held, a run that has copied its window works on its copy, then waits
-  /// (without the lock) before applying its results, so that the map changes only by tracking
-  /// while the run is in flight, for as many frames as the caller feeds (tests of the locking
-  /// policy; a long run live). New keyframes queue meanwhile. Releasing lets the run apply. No
-  /// effect when synchronous.
-  void HoldBackEndResults(bool hold);
-
   /// Every tracked frame re-expressed on its reference keyframe as refined by the back end so
   /// far (RefinedTrajectory, a copy); the same poses as the causal ones with the back end off.
   /// The map lock is held only to copy RefinedTrajectory::Take (O(keyframes in the map), not
@@ -186,7 +173,20 @@ class Slam {
   BackEndMode mode() const { return mode_; }                   ///< as constructed
 
  private:
+  friend class SlamTestAccess;  // tests: the two holds below (test/support/slam_test_access.h)
   using Lock = TimedLock;
+
+  /// Threaded: while held, keyframes queue (the backlog grows) and no run starts; releasing
+  /// starts one run for the newest (as when the thread is busy): tests see the queue. No effect
+  /// when synchronous.
+  void HoldBackEnd(bool hold);
+
+  /// Threaded: while held, a run that has copied its window works on its copy, then waits
+  /// (without the lock) before applying its results, so that the map changes only by tracking
+  /// while the run is in flight, for as many frames as the caller feeds (tests of the locking
+  /// policy). New keyframes queue meanwhile. Releasing lets the run apply. No
+  /// effect when synchronous.
+  void HoldBackEndResults(bool hold);
 
   /// Drops the back end's work, calls `reset` (which resets the odometry), queues a reset of
   /// `mode` and then `after_reset` for the observers, delivering them as Reset describes.
