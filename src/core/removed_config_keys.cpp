@@ -41,7 +41,7 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
     {"tracking", "descriptor_observations",
      "tried, off: BENCHMARKS.md, \"Map point descriptors refined from their observations\""},
     {"tracking", "cull_min_visible",
-     "no measurement changed it; now 8 (odometry_steps.cpp)"},
+     "no measurement changed it; now 8 (odometry_keyframes.cpp)"},
     {"tracking", "robust_pose_points",
      "the marked matches always vote first, then all: `all` gave the same trajectories, "
      "`marked` lost frames (BENCHMARKS.md, \"Back end, part 1\")"},

@@ -126,7 +126,7 @@ struct TrackingConfig {
     v(Field("dynamic_neighbour_radius_px", "px", 0.0, 1000.0,
             "new points start unmarked when most tracked neighbours within this are dynamic"),
       s.dynamic_neighbour_radius_px);
-    // Checked once a point was visible in 8 frames (kCullMinVisible, odometry_steps.cpp).
+    // Checked once a point was visible in 8 frames (kCullMinVisible, odometry_keyframes.cpp).
     v(Field("cull_min_found_ratio", "-", 0.0, 1.0, "found/visible ratio below this: cull"),
       s.cull_min_found_ratio);
     // E.g. points hidden by a person standing in front of the camera are found again when the
