@@ -62,15 +62,16 @@ void ReadDepthNoise(const YAML::Node& root, const std::string& path, CameraYaml*
     throw std::runtime_error(path + ": give both " + kQuadratic + " and " + kConstant +
                              " (the depth noise a d^2 + b) or neither");
   }
-  for (const char* key : {kQuadratic, kConstant}) {
+  const auto in_range = [&](const char* key) {
     const double value = RequiredNumber(root, key, path);
     if (!(value >= 0.0 && value <= 0.1)) {
       throw std::runtime_error(path + ": " + key + " must be in [0, 0.1], got " +
                                std::to_string(value));
     }
-  }
-  out->depth_sigma_d_quadratic = RequiredNumber(root, kQuadratic, path);
-  out->depth_sigma_d_constant_m = RequiredNumber(root, kConstant, path);
+    return value;
+  };
+  out->depth_sigma_d_quadratic = in_range(kQuadratic);
+  out->depth_sigma_d_constant_m = in_range(kConstant);
 }
 
 CameraYaml CameraYamlFromNode(const YAML::Node& root, const std::string& path) {

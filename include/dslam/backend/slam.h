@@ -184,8 +184,8 @@ class Slam {
   /// Threaded: while held, a run that has copied its window works on its copy, then waits
   /// (without the lock) before applying its results, so that the map changes only by tracking
   /// while the run is in flight, for as many frames as the caller feeds (tests of the locking
-  /// policy). New keyframes queue meanwhile. Releasing lets the run apply. No
-  /// effect when synchronous.
+  /// policy). New keyframes queue meanwhile. Releasing lets the run apply. No effect when
+  /// synchronous.
   void HoldBackEndResults(bool hold);
 
   /// Drops the back end's work, calls `reset` (which resets the odometry), queues a reset of

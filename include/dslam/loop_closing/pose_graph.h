@@ -83,11 +83,12 @@ Eigen::Matrix<double, 6, 1> PoseGraphResidual(const PoseGraphEdge& edge,
                                               const Eigen::Isometry3d& T_world_a,
                                               const Eigen::Isometry3d& T_world_b);
 
-/// Minimises the sum of squared PoseGraphResidual over the edges, each node's pose a quaternion on Ceres' Eigen quaternion manifold and a
-/// translation, the fixed nodes held. Nodes without edges keep their pose. Throws
-/// std::invalid_argument when no node is fixed, when an edge names a node missing from the graph
-/// or joins a node to itself (the message names the id), when an edge's information is not
-/// positive definite (it names the edge's ids) or when an option is out of range.
+/// Minimises the sum of squared PoseGraphResidual over the edges, each node's pose a quaternion
+/// on Ceres' Eigen quaternion manifold and a translation, the fixed nodes held. Nodes without
+/// edges keep their pose. Throws std::invalid_argument when no node is fixed, when an edge names
+/// a node missing from the graph or joins a node to itself (the message names the id), when an
+/// edge's information is not positive definite (it names the edge's ids) or when an option is
+/// out of range.
 PoseGraphResult OptimisePoseGraph(const PoseGraph& graph, const PoseGraphOptions& options = {});
 
 }  // namespace dslam
