@@ -1,6 +1,7 @@
 #include "dslam/core/config.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dslam {
 
@@ -35,6 +36,12 @@ void Config::Validate() const {
   }
   if (map.extent_m < map.voxel_size_m) {
     throw ConfigError("map.extent_m must not be smaller than map.voxel_size_m");
+  }
+  if (grid.min_height_m >= grid.max_height_m) {
+    throw ConfigError("grid.min_height_m must be smaller than grid.max_height_m");
+  }
+  if (std::hypot(grid.up_x, grid.up_y, grid.up_z) < 0.1) {
+    throw ConfigError("grid.up_x, grid.up_y, grid.up_z: the up vector must not be (near) zero");
   }
 }
 

@@ -205,6 +205,25 @@ ColouredCloud StaticMapper::Cloud() const {
   return cloud;
 }
 
+StaticMapRays StaticMapper::Rays() const {
+  StaticMapRays rays;
+  for (const ColouredPoint& point : Cloud()) rays.points_world.push_back(point.p);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  const auto add_view = [&](const Eigen::Isometry3d& T_world_camera, const ColouredCloud& points) {
+    GridView view;
+    view.camera_world = T_world_camera.translation();
+    const Eigen::Isometry3f T = T_world_camera.cast<float>();
+    view.points_world.reserve(points.size());
+    for (const ColouredPoint& point : points) view.points_world.push_back(T * point.p);
+    rays.views.push_back(std::move(view));
+  };
+  for (const FusedKeyFrame& keyframe : fused_)
+    add_view(keyframe.T_world_camera, keyframe.points_camera);
+  for (const WindowKeyFrame& keyframe : window_)
+    add_view(keyframe.T_world_camera, keyframe.points_camera);
+  return rays;
+}
+
 StaticMapStats StaticMapper::stats() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   StaticMapStats stats = stats_;

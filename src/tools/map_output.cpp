@@ -6,9 +6,14 @@ namespace dslam {
 namespace tools {
 
 MapOutput::MapOutput(const std::string& masked_path, const std::string& unmasked_path,
-                     const Config& config)
-    : masked_path_(masked_path), unmasked_path_(unmasked_path) {
-  if (!masked_path_.empty()) masked_ = std::make_shared<StaticMapper>(config);
+                     const std::string& grid_path, const Config& config)
+    : masked_path_(masked_path),
+      unmasked_path_(unmasked_path),
+      grid_path_(grid_path),
+      config_(config) {
+  if (!masked_path_.empty() || !grid_path_.empty()) {
+    masked_ = std::make_shared<StaticMapper>(config);
+  }
   if (!unmasked_path_.empty()) {
     Config baseline = config;
     baseline.map.dynamic_masks = false;
@@ -28,9 +33,10 @@ void MapOutput::Write() {
   if (masked_) {
     masked_->FuseWindow();
     const ColouredCloud cloud = masked_->Cloud();
-    WritePcd(masked_path_, cloud);
+    if (!masked_path_.empty()) WritePcd(masked_path_, cloud);
     masked_points_ = cloud.size();
   }
+  if (!grid_path_.empty()) WriteGrid();
   if (unmasked_) {
     unmasked_->FuseWindow();
     const ColouredCloud cloud = unmasked_->Cloud();
@@ -39,8 +45,28 @@ void MapOutput::Write() {
   }
 }
 
+void MapOutput::WriteGrid() {
+  const GridConfig& config = config_.grid;
+  const StaticMapRays rays = masked_->Rays();
+  const double cell_size_m =
+      config.cell_size_m > 0.0 ? config.cell_size_m : config_.map.voxel_size_m;
+  // The world frame is the first frame's optical frame (the trajectory's).
+  grid_ = BuildOccupancyGrid(rays.points_world, rays.views, Eigen::Isometry3d::Identity(),
+                             Eigen::Vector3d(config.up_x, config.up_y, config.up_z), cell_size_m,
+                             config);
+  WriteMapServerFiles(grid_, grid_path_);
+}
+
 void MapOutput::Print() const {
-  if (masked_) {
+  if (!grid_path_.empty()) {
+    std::printf("grid: %d x %d cells of %.3f m, %d occupied, %d free; floor %s -> %s\n",
+                grid_.width, grid_.height, grid_.cell_size_m, grid_.Count(kCellOccupied),
+                grid_.Count(kCellFree),
+                grid_.floor.from_plane ? "a horizontal plane of the map"
+                                       : "grid.floor_height_m below the first camera",
+                grid_path_.c_str());
+  }
+  if (!masked_path_.empty()) {
     const StaticMapStats stats = masked_->stats();
     std::printf(
         "map: %zu points from %d keyframes (%zu keyframe points seen through, %zu voxels "
@@ -62,6 +88,11 @@ void MapOutput::AddTo(JsonObject* json) const {
         .AddInteger("map_carved_voxels", static_cast<long>(stats.carved_voxels));
   }
   if (unmasked_) json->AddInteger("map_unmasked_points", static_cast<long>(unmasked_points_));
+  if (!grid_path_.empty()) {
+    json->AddInteger("grid_occupied_cells", grid_.Count(kCellOccupied))
+        .AddInteger("grid_free_cells", grid_.Count(kCellFree))
+        .AddInteger("grid_floor_from_plane", grid_.floor.from_plane ? 1 : 0);
+  }
 }
 
 }  // namespace tools

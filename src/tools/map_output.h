@@ -3,7 +3,8 @@
 // as its keyframe observers, written as PCD files (x y z rgb) in the trajectory's frame (the
 // odometry world frame: the first frame's optical frame). The unmasked map is the same fusion of
 // the same run without dynamic masks and without the free-space check: the static-world
-// baseline.
+// baseline. --grid writes the masked map's occupancy grid (occupancy_grid.h) as map_server's
+// YAML and PGM pair, its up the config's grid.up_* in the first frame's optical frame.
 
 #include <memory>
 #include <string>
@@ -21,8 +22,10 @@ namespace tools {
 class MapOutput {
  public:
   /// `config`: the run's (config.map for both maps; the unmasked one with dynamic_masks and
-  /// free_space_check off).
-  MapOutput(const std::string& masked_path, const std::string& unmasked_path, const Config& config);
+  /// free_space_check off; config.grid for the grid). `grid_path`: the grid's YAML (its PGM
+  /// beside it); the masked map is built for it also without `masked_path`.
+  MapOutput(const std::string& masked_path, const std::string& unmasked_path,
+            const std::string& grid_path, const Config& config);
 
   /// The mappers, for Slam's constructor (empty when no map is asked for).
   std::vector<std::shared_ptr<KeyFrameObserver>> Observers() const;
@@ -31,15 +34,20 @@ class MapOutput {
   /// Slam::WaitForBackEnd. Throws std::runtime_error when a file cannot be written.
   void Write();
 
-  /// One line per map written (points, keyframes, transient points and voxels removed).
+  /// One line per map written (points, keyframes, transient points and voxels removed) and one
+  /// for the grid.
   void Print() const;
 
   /// Adds map_points, map_transient_points, map_carved_voxels and map_unmasked_points.
   void AddTo(JsonObject* json) const;
 
  private:
-  std::string masked_path_, unmasked_path_;
+  void WriteGrid();
+
+  std::string masked_path_, unmasked_path_, grid_path_;
+  Config config_;
   std::shared_ptr<StaticMapper> masked_, unmasked_;
+  OccupancyGrid grid_;
   size_t masked_points_ = 0, unmasked_points_ = 0;
 };
 

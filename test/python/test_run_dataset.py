@@ -161,6 +161,37 @@ class RunDatasetCliTest(unittest.TestCase):
         self.assertEqual(sync_summary["object_frames"], len(lines))
         self.assertIn("median_objects_add_ms", thread_summary)
 
+    def test_grid_files(self):
+        """--grid writes map_server's pair (include/dslam/mapping/occupancy_grid.h): the YAML's
+        keys, a binary PGM of the YAML's image name whose occupied (0) and free (254) pixels are
+        the summary's counts, both present, and nothing but 0, 254 and 205."""
+        path = os.path.join(self.tmp, "grid.yaml")
+        code, summary, _, _ = self.run_tool("grid", "--grid", path)
+        self.assertEqual(code, 0)
+        keys = {}
+        with open(path) as handle:
+            for line in handle:
+                if line.strip() and not line.startswith("#"):
+                    key, value = line.split(":", 1)
+                    keys[key.strip()] = value.strip()
+        self.assertEqual(keys["image"], "grid.pgm")
+        self.assertEqual(float(keys["resolution"]), 0.05)  # map.voxel_size_m's default
+        self.assertEqual(len(keys["origin"].strip("[]").split(",")), 3)
+        self.assertEqual((keys["negate"], keys["occupied_thresh"], keys["free_thresh"],
+                          keys["mode"]), ("0", "0.65", "0.196", "trinary"))
+        with open(os.path.join(self.tmp, "grid.pgm"), "rb") as handle:
+            data = handle.read()
+        fields = data.split(b"\n", 3)  # P5, comment, size, then "255\n" and the pixels
+        self.assertEqual(fields[0], b"P5")
+        width, height = (int(v) for v in fields[2].split())
+        pixels = fields[3][len(b"255\n"):]
+        self.assertEqual(len(pixels), width * height)
+        self.assertEqual(set(pixels) - {0, 254, 205}, set())
+        self.assertEqual(pixels.count(0), summary["grid_occupied_cells"])
+        self.assertEqual(pixels.count(254), summary["grid_free_cells"])
+        self.assertGreater(summary["grid_occupied_cells"], 0)
+        self.assertGreater(summary["grid_free_cells"], 0)
+
     def test_save_keyframe_map(self):
         """The header of the keyframe map file (include/dslam/map_file/keyframe_map_file.h):
         version 2, size, checksum, the sequence's camera, the committed vocabulary's identity

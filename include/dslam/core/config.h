@@ -9,6 +9,7 @@
 #include "dslam/core/backend_config.h"
 #include "dslam/core/config_field.h"
 #include "dslam/core/features_config.h"
+#include "dslam/core/grid_config.h"
 #include "dslam/core/loop_closing_config.h"
 #include "dslam/core/map_config.h"
 #include "dslam/core/objects_config.h"
@@ -43,6 +44,7 @@ struct Config {
   DynamicMaskConfig dynamic_mask;    ///< per-pixel masks of moving things (objects_config.h)
   ObjectsConfig objects;             ///< moving objects tracked across frames (objects_config.h)
   MapConfig map;                     ///< the static map (map_config.h)
+  GridConfig grid;                   ///< occupancy grid from the static map (grid_config.h)
 
   /// Calls `f(name, section)` for every section, in documentation order.
   template <typename Self, typename F>
@@ -58,6 +60,7 @@ struct Config {
     f("dynamic_mask", s.dynamic_mask);
     f("objects", s.objects);
     f("map", s.map);
+    f("grid", s.grid);
   }
 
   /// Throws ConfigError naming the first out-of-range or inconsistent parameter.

@@ -34,6 +34,7 @@
 #include "dslam/core/config.h"
 #include "dslam/mapping/coloured_cloud.h"
 #include "dslam/mapping/free_space.h"
+#include "dslam/mapping/occupancy_grid.h"
 #include "dslam/mapping/voxel_map.h"
 
 namespace dslam {
@@ -47,6 +48,14 @@ struct StaticMapStats {
   size_t carved_voxels = 0;     ///< voxels removed as transient
   size_t cropped_voxels = 0;    ///< voxels removed outside the extent
   int corrections = 0;          ///< loop corrections that re-fused the map
+};
+
+/// What an occupancy grid is made of (BuildOccupancyGrid), world (odometry) frame.
+struct StaticMapRays {
+  std::vector<Eigen::Vector3f> points_world;  ///< [m] the map's points, as Cloud() gives them
+  /// The rays of the keyframes whose points the mapper keeps: the newest tracking.max_keyframes
+  /// fused ones (their fused points) and the window's (their points), oldest first.
+  std::vector<GridView> views;
 };
 
 /// Fuses Slam's keyframes into a static map (see above).
@@ -70,6 +79,9 @@ class StaticMapper : public KeyFrameObserver {
   /// The map in the world (odometry) frame: one point per voxel of the fused map, and the window
   /// keyframes' points at their current poses, one per voxel not yet in the fused map.
   ColouredCloud Cloud() const;
+
+  /// The map's points and the rays of the keyframes it keeps, at their current poses.
+  StaticMapRays Rays() const;
 
   StaticMapStats stats() const;
   /// Increases whenever the map changes (a keyframe, a pose, a reset).

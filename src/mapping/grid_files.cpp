@@ -1,0 +1,90 @@
+// map_server's pair of files for an OccupancyGrid (occupancy_grid.h).
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "dslam/mapping/occupancy_grid.h"
+
+namespace dslam {
+namespace {
+
+// map_server's trinary values (its mode: trinary with negate 0 reads p = (255 - v) / 255).
+constexpr unsigned char kPgmOccupied = 0;
+constexpr unsigned char kPgmFree = 254;
+constexpr unsigned char kPgmUnknown = 205;
+
+std::string ImagePath(const std::string& yaml_path) {
+  const size_t slash = yaml_path.find_last_of('/');
+  const size_t dot = yaml_path.find_last_of('.');
+  const bool has_extension =
+      dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (has_extension ? yaml_path.substr(0, dot) : yaml_path) + ".pgm";
+}
+
+std::string BaseName(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+void Check(const std::ofstream& out, const std::string& path) {
+  if (!out) {
+    throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  }
+}
+
+void WritePgm(const OccupancyGrid& grid, const std::string& path) {
+  std::ofstream out(path, std::ios::binary);
+  Check(out, path);
+  out << "P5\n# dslam occupancy grid, " << grid.cell_size_m << " m per cell\n"
+      << grid.width << " " << grid.height << "\n255\n";
+  std::string row(static_cast<size_t>(grid.width), '\0');
+  for (int j = grid.height - 1; j >= 0; --j) {  // the image's top row is the highest y
+    for (int i = 0; i < grid.width; ++i) {
+      const int8_t v = grid.At(i, j);
+      row[static_cast<size_t>(i)] = static_cast<char>(v == kCellOccupied ? kPgmOccupied
+                                                      : v == kCellFree   ? kPgmFree
+                                                                         : kPgmUnknown);
+    }
+    out.write(row.data(), static_cast<std::streamsize>(row.size()));
+  }
+  out.flush();
+  Check(out, path);
+}
+
+}  // namespace
+
+void WriteMapServerFiles(const OccupancyGrid& grid, const std::string& yaml_path) {
+  const std::string image_path = ImagePath(yaml_path);
+  WritePgm(grid, image_path);
+  std::ofstream out(yaml_path);
+  Check(out, yaml_path);
+  const Eigen::Quaterniond q(grid.T_world_grid.rotation());
+  const Eigen::Vector3d& t = grid.T_world_grid.translation();
+  out << std::setprecision(9);
+  out << "# dslam occupancy grid (map_server format; map_server reads the first seven keys).\n"
+      << "# The map frame G: z up, origin on the floor below the first keyframe's camera.\n"
+      << "# T_world_grid: G in the world (odometry) frame, x y z qx qy qz qw [m].\n"
+      << "# min/max_height_m: the obstacle band above the floor [m]; floor_from_plane: 1 when the\n"
+      << "# floor is a plane of the map, 0 when grid.floor_height_m below the first camera.\n"
+      << "image: " << BaseName(image_path) << "\n"
+      << "resolution: " << grid.cell_size_m << "\n"
+      << "origin: [" << grid.origin_m.x() << ", " << grid.origin_m.y() << ", 0.0]\n"
+      << "negate: 0\n"
+      << "occupied_thresh: 0.65\n"
+      << "free_thresh: 0.196\n"
+      << "mode: trinary\n"
+      << "T_world_grid: [" << t.x() << ", " << t.y() << ", " << t.z() << ", " << q.x() << ", "
+      << q.y() << ", " << q.z() << ", " << q.w() << "]\n"
+      << "min_height_m: " << grid.min_height_m << "\n"
+      << "max_height_m: " << grid.max_height_m << "\n"
+      << "floor_from_plane: " << (grid.floor.from_plane ? 1 : 0) << "\n";
+  out.flush();
+  Check(out, yaml_path);
+}
+
+}  // namespace dslam
