@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <yaml-cpp/yaml.h>
+
 #include "dslam/mapping/occupancy_grid.h"
 
 namespace dslam {
@@ -85,6 +87,82 @@ void WriteMapServerFiles(const OccupancyGrid& grid, const std::string& yaml_path
       << "floor_from_plane: " << (grid.floor.from_plane ? 1 : 0) << "\n";
   out.flush();
   Check(out, yaml_path);
+}
+
+namespace {
+
+// The PGM's cells (P5, 8 bits, one comment line at most between the fields).
+void ReadPgm(const std::string& path, OccupancyGrid* grid) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  std::string magic;
+  in >> magic;
+  int width = 0, height = 0, max_value = 0;
+  in >> std::ws;
+  if (in.peek() == '#') in.ignore(1 << 20, '\n');
+  in >> width >> height >> max_value;
+  in.get();
+  if (magic != "P5" || width <= 0 || height <= 0 || max_value != 255) {
+    throw std::runtime_error(path + ": not an 8-bit binary PGM");
+  }
+  if (width != grid->width || height != grid->height) {
+    throw std::runtime_error(path + ": " + std::to_string(width) + " x " + std::to_string(height) +
+                             " pixels, not the YAML's grid");
+  }
+  std::string row(static_cast<size_t>(width), '\0');
+  for (int j = height - 1; j >= 0; --j) {
+    if (!in.read(&row[0], width)) throw std::runtime_error(path + ": truncated");
+    for (int i = 0; i < width; ++i) {
+      const auto v = static_cast<unsigned char>(row[static_cast<size_t>(i)]);
+      grid->cells[static_cast<size_t>(j) * width + i] = v == kPgmOccupied ? kCellOccupied
+                                                        : v == kPgmFree   ? kCellFree
+                                                                          : kCellUnknown;
+    }
+  }
+}
+
+}  // namespace
+
+OccupancyGrid ReadMapServerFiles(const std::string& yaml_path) {
+  OccupancyGrid grid;
+  std::string image;
+  try {
+    const YAML::Node yaml = YAML::LoadFile(yaml_path);
+    image = yaml["image"].as<std::string>();
+    grid.cell_size_m = yaml["resolution"].as<double>();
+    grid.origin_m = {yaml["origin"][0].as<double>(), yaml["origin"][1].as<double>()};
+    const std::vector<double> T = yaml["T_world_grid"].as<std::vector<double>>();
+    if (T.size() != 7) throw std::runtime_error("T_world_grid needs 7 numbers");
+    grid.T_world_grid.linear() =
+        Eigen::Quaterniond(T[6], T[3], T[4], T[5]).normalized().toRotationMatrix();
+    grid.T_world_grid.translation() = Eigen::Vector3d(T[0], T[1], T[2]);
+    grid.min_height_m = yaml["min_height_m"].as<double>();
+    grid.max_height_m = yaml["max_height_m"].as<double>();
+    grid.floor.from_plane = yaml["floor_from_plane"].as<int>() != 0;
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error(yaml_path + ": not a dslam grid file: " + e.what());
+  }
+  grid.floor.up_world = grid.T_world_grid.linear().col(2);
+  grid.floor.height_m = grid.floor.up_world.dot(grid.T_world_grid.translation());
+  if (!(grid.cell_size_m > 0.0)) throw std::runtime_error(yaml_path + ": resolution <= 0");
+  const size_t slash = yaml_path.find_last_of('/');
+  const std::string image_path = image.front() == '/' || slash == std::string::npos
+                                     ? image
+                                     : yaml_path.substr(0, slash + 1) + image;
+  std::ifstream probe(image_path, std::ios::binary);
+  std::string magic;
+  int width = 0, height = 0;
+  probe >> magic >> std::ws;
+  if (probe.peek() == '#') probe.ignore(1 << 20, '\n');
+  probe >> width >> height;
+  if (!probe || width <= 0 || height <= 0 || width > 100000 || height > 100000) {
+    throw std::runtime_error("cannot read the size of " + image_path);
+  }
+  grid.width = width;
+  grid.height = height;
+  grid.cells.assign(static_cast<size_t>(width) * height, kCellUnknown);
+  ReadPgm(image_path, &grid);
+  return grid;
 }
 
 }  // namespace dslam

@@ -1,8 +1,10 @@
 // dslam_eval_map: a static map (PCD, e.g. from `dslam_run_dataset --map`) against the truth of a
 // dslam_synth folder (depth_true/, mask/, groundtruth.txt), with the scores of
-// dslam/eval/map_metrics.h: ghost share, static coverage, static share.
-//   dslam_eval_map --dataset FOLDER --map MAP.pcd [--trajectory EST_TRAJ.txt] [--json OUT.json]
-//                  [--radius M] [--voxel M] [--pixel-stride N] [--frame-stride N]
+// dslam/eval/map_metrics.h: ghost share, static coverage, static share; and an occupancy grid
+// (`dslam_run_dataset --grid`) with dslam/eval/grid_metrics.h: precision, recall, ghost cells.
+//   dslam_eval_map --dataset FOLDER [--map MAP.pcd] [--grid GRID.yaml [--unmasked-map U.pcd]]
+//                  [--trajectory EST_TRAJ.txt] [--json OUT.json] [--radius M] [--voxel M]
+//                  [--pixel-stride N] [--frame-stride N]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,22 +14,28 @@
 #include <string>
 #include <vector>
 
+#include "dslam/eval/grid_metrics.h"
 #include "dslam/eval/json_writer.h"
 #include "dslam/eval/map_metrics.h"
 #include "dslam/eval/trajectory_metrics.h"
 #include "dslam/io/dataset_io.h"
 #include "dslam/io/trajectory_io.h"
 #include "dslam/mapping/coloured_cloud.h"
+#include "dslam/mapping/occupancy_grid.h"
 #include "eval_tool.h"
 
 namespace {
 
 constexpr char kUsage[] =
-    "usage: dslam_eval_map --dataset FOLDER --map MAP.pcd [--trajectory EST_TRAJ.txt]\n"
+    "usage: dslam_eval_map --dataset FOLDER [--map MAP.pcd] [--grid GRID.yaml\n"
+    "                      [--unmasked-map U.pcd]] [--trajectory EST_TRAJ.txt]\n"
     "                      [--json OUT.json] [--radius M] [--voxel M] [--pixel-stride N]\n"
     "                      [--frame-stride N]\n"
     "  --dataset       dslam_synth folder: depth_true.txt, mask.txt, groundtruth.txt, rgb.txt\n"
     "  --map           PCD with fields x y z (others ignored) in the trajectory's frame\n"
+    "  --grid          occupancy grid YAML of dslam_run_dataset --grid (its PGM beside it)\n"
+    "  --unmasked-map  with --grid: a map (PCD, e.g. --map-unmasked) whose points in the\n"
+    "                  grid's band are scored as occupied cells: the grid without masks and rays\n"
     "  --trajectory    the run's trajectory: its first pose places the map in the world\n"
     "                  (default: the map's frame is the first frame's optical frame)\n"
     "  --json          also write the numbers as JSON to this file\n"
@@ -91,6 +99,40 @@ dslam::JsonObject MetricsJson(const dslam::MapMetrics& m, const dslam::MapMetric
   return json;
 }
 
+void PrintGrid(const char* name, const dslam::GridMetrics& m) {
+  std::printf("%-24s %zu occupied, precision %.4f, recall %.4f (%zu static cells)\n", name,
+              m.occupied_cells, m.precision, m.recall, m.static_truth_cells);
+  std::printf("%-24s %zu (of %zu cells where only people stood)\n",
+              (std::string(name) + " ghost cells:").c_str(), m.ghost_cells, m.people_truth_cells);
+}
+
+void AddGrid(const std::string& prefix, const dslam::GridMetrics& m, dslam::JsonObject* json) {
+  constexpr int kDigits = 9;
+  json->AddInteger(prefix + "occupied_cells", static_cast<long long>(m.occupied_cells))
+      .AddInteger(prefix + "static_truth_cells", static_cast<long long>(m.static_truth_cells))
+      .AddInteger(prefix + "people_truth_cells", static_cast<long long>(m.people_truth_cells))
+      .AddInteger(prefix + "ghost_cells", static_cast<long long>(m.ghost_cells))
+      .AddNumber(prefix + "precision", m.precision, kDigits)
+      .AddNumber(prefix + "recall", m.recall, kDigits);
+}
+
+// --grid (and --unmasked-map): printed as `grid ...` and `ghost cells: N` lines and added to the
+// JSON as grid_* (unmasked_grid_*).
+void EvaluateGridFile(const dslam::tools::Options& values, const Eigen::Isometry3d& T_world_map,
+                      const dslam::MapReference& reference, dslam::JsonObject* json) {
+  const dslam::OccupancyGrid grid = dslam::ReadMapServerFiles(values.at("grid"));
+  const dslam::GridMetrics metrics = dslam::EvaluateGrid(grid, T_world_map, reference);
+  PrintGrid("grid", metrics);
+  json->AddString("grid", values.at("grid"));
+  AddGrid("grid_", metrics, json);
+  if (!values.count("unmasked-map")) return;
+  const std::vector<Eigen::Vector3d> points = LoadMap(values.at("unmasked-map"), T_world_map);
+  const dslam::GridMetrics unmasked =
+      dslam::EvaluateOccupiedPoints(grid, T_world_map, points, reference);
+  PrintGrid("unmasked", unmasked);
+  AddGrid("unmasked_grid_", unmasked, json);
+}
+
 int Run(const dslam::tools::Options& values) {
   using dslam::tools::NumberKind;
   using dslam::tools::NumberOption;
@@ -102,25 +144,35 @@ int Run(const dslam::tools::Options& values) {
   options.frame_stride = static_cast<int>(
       NumberOption(values, "frame-stride", options.frame_stride, NumberKind::kPositiveWhole));
   const std::string folder = values.at("dataset");
+  if (!values.count("map") && !values.count("grid")) {
+    throw dslam::tools::UsageError("give --map, --grid or both");
+  }
+  if (values.count("unmasked-map") && !values.count("grid")) {
+    throw dslam::tools::UsageError("--unmasked-map needs --grid");
+  }
   constexpr double kMaxDt_s = 0.005;
   const Eigen::Isometry3d T_world_map =
       dslam::tools::EstimateWorldFrame(folder, values, kMaxDt_s).T_world_estimate;
-  const std::vector<Eigen::Vector3d> map = LoadMap(values.at("map"), T_world_map);
   const dslam::MapReference reference = dslam::LoadMapReference(folder, options);
-  const dslam::MapMetrics metrics = dslam::EvaluateMap(map, reference, options.radius_m);
-  PrintTable(metrics, options, reference.frames);
-  if (values.count("json")) {
-    dslam::WriteJsonFile(values.at("json"),
-                         MetricsJson(metrics, options, reference.frames, values));
+  dslam::JsonObject json;
+  if (values.count("map")) {
+    const std::vector<Eigen::Vector3d> map = LoadMap(values.at("map"), T_world_map);
+    const dslam::MapMetrics metrics = dslam::EvaluateMap(map, reference, options.radius_m);
+    PrintTable(metrics, options, reference.frames);
+    json = MetricsJson(metrics, options, reference.frames, values);
+  } else {
+    json.AddString("dataset", folder).AddInteger("reference_frames", reference.frames);
   }
+  if (values.count("grid")) EvaluateGridFile(values, T_world_map, reference, &json);
+  if (values.count("json")) dslam::WriteJsonFile(values.at("json"), json);
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return dslam::tools::RunTool(
-      "dslam_eval_map", kUsage, argc, argv,
-      {"dataset", "map", "trajectory", "json", "radius", "voxel", "pixel-stride", "frame-stride"},
-      {"dataset", "map"}, Run);
+  return dslam::tools::RunTool("dslam_eval_map", kUsage, argc, argv,
+                               {"dataset", "map", "grid", "unmasked-map", "trajectory", "json",
+                                "radius", "voxel", "pixel-stride", "frame-stride"},
+                               {"dataset"}, Run);
 }

@@ -170,7 +170,27 @@ TEST(OccupancyGrid, MapServerFilesReadBack) {
       ASSERT_EQ(v, cell == kCellOccupied ? 0 : cell == kCellFree ? 254 : 205) << i << " " << j;
     }
   }
+  const OccupancyGrid read = ReadMapServerFiles(yaml_path);
+  EXPECT_EQ(read.cells, grid.cells);
+  EXPECT_EQ(read.width, grid.width);
+  EXPECT_EQ(read.height, grid.height);
+  EXPECT_TRUE(read.origin_m.isApprox(grid.origin_m, 1e-9));
+  EXPECT_TRUE(read.T_world_grid.isApprox(grid.T_world_grid, 1e-6));
+  EXPECT_NEAR(read.floor.height_m, grid.floor.height_m, 1e-6);
+  EXPECT_EQ(read.floor.from_plane, grid.floor.from_plane);
   std::remove(yaml_path.c_str());
+}
+
+TEST(OccupancyGrid, ReadingAFileThatIsNoGridNamesIt) {
+  const std::string path = ::testing::TempDir() + "/dslam_not_a_grid.yaml";
+  std::ofstream(path) << "image: x.pgm\nresolution: 0.05\n";
+  try {
+    ReadMapServerFiles(path);
+    FAIL() << "a file without origin was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
 }
 
 TEST(GridConfig, BandAndUpValidated) {

@@ -1,7 +1,7 @@
 """Regression test of what dslam builds beside the pose, on a short synthetic `walking` scene
 (seed 1, 90 frames) with the existing metrics against dslam_synth's truth: the static map's ghost
-share and coverage (dslam_eval_map) and the moving objects' detection and accuracy
-(dslam_eval_objects). Synchronous runs are deterministic: each bound is about twice the value
+share and coverage and the occupancy grid's ghost cells, precision and recall (dslam_eval_map),
+and the moving objects' detection and accuracy (dslam_eval_objects). Synchronous runs are deterministic: each bound is about twice the value
 measured on these frames (written beside it), so a 2x regression fails."""
 
 import json
@@ -28,7 +28,8 @@ class MapAndObjectsRegressionTest(unittest.TestCase):
                        stdout=subprocess.DEVNULL)
         cls.out = os.path.join(cls.tmp, "run")
         subprocess.run([find_tool("dslam_run_dataset"), "--dataset", cls.folder, "--trajectory",
-                        cls.out + ".txt", "--map", cls.out + ".pcd", "--objects",
+                        cls.out + ".txt", "--map", cls.out + ".pcd", "--map-unmasked",
+                        cls.out + "_unmasked.pcd", "--grid", cls.out + "_grid.yaml", "--objects",
                         cls.out + "_objects.txt", "--quiet"], check=True,
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
@@ -53,6 +54,15 @@ class MapAndObjectsRegressionTest(unittest.TestCase):
         self.assertGreater(m["static_coverage"], STATIC_COVERAGE_MIN)
         self.assertGreater(m["static_share"], STATIC_SHARE_MIN)
 
+    def test_grid_keeps_few_ghost_cells_and_finds_the_static_cells(self):
+        g = self.evaluate("dslam_eval_map", "--grid", self.out + "_grid.yaml", "--unmasked-map",
+                          self.out + "_unmasked.pcd")
+        self.assertLess(g["grid_ghost_cells"], GRID_GHOST_CELLS_MAX)
+        self.assertGreater(g["grid_precision"], GRID_PRECISION_MIN)
+        self.assertGreater(g["grid_recall"], GRID_RECALL_MIN)
+        # The metric sees ghosts where they are: the unmasked map's cells on the people's paths.
+        self.assertGreater(g["unmasked_grid_ghost_cells"], UNMASKED_GHOST_CELLS_MIN)
+
     def test_moving_objects_are_found_where_they_are(self):
         o = self.evaluate("dslam_eval_objects", "--objects", self.out + "_objects.txt")
         self.assertGreater(o["found_share"], FOUND_SHARE_MIN)
@@ -67,6 +77,10 @@ class MapAndObjectsRegressionTest(unittest.TestCase):
 GHOST_SHARE_MAX = 0.018         # 0.0090 (210 of 23331 map points)
 STATIC_COVERAGE_MIN = 0.9925    # 0.9963 (0.0037 of the static surface not covered)
 STATIC_SHARE_MIN = 0.684        # 0.8419
+GRID_GHOST_CELLS_MAX = 122      # 61 (of 921 cells where only people stood), at d6663bb + 1
+GRID_PRECISION_MIN = 0.78       # 0.8918 (occupied cells within a cell of the static truth)
+GRID_RECALL_MIN = 0.98          # 1.0000
+UNMASKED_GHOST_CELLS_MIN = 354  # 708: the same band of the map without masks and free-space check
 FOUND_SHARE_MIN = 0.887         # 0.9435 (167 of 177 truth object-frames)
 CENTROID_ERROR_MAX_M = 0.127    # 0.0632 m
 VELOCITY_ERROR_MAX_MPS = 0.17   # 0.0846 m/s

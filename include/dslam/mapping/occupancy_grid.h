@@ -90,4 +90,10 @@ OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_
 /// Throws std::runtime_error naming the file that cannot be written.
 void WriteMapServerFiles(const OccupancyGrid& grid, const std::string& yaml_path);
 
+/// Reads what WriteMapServerFiles wrote: the cells, cell size, origin, T_world_grid, the band and
+/// floor_from_plane (the floor's height and up follow from T_world_grid: its origin is on the
+/// floor, its z axis up). Throws std::runtime_error naming the file that is missing, unreadable
+/// or not such a file.
+OccupancyGrid ReadMapServerFiles(const std::string& yaml_path);
+
 }  // namespace dslam
