@@ -1,5 +1,6 @@
 """The pure parts of scripts/mapping_benchmark.py: the commands of one run (dslam_run_dataset
-with --map, --map-unmasked and --objects, then dslam_eval_objects and dslam_eval_map), the numbers
+with --map, --map-unmasked, --grid and --objects, then dslam_eval_objects and dslam_eval_map, the
+masked map's with the grid), the numbers
 of one run from the tools' JSON files, the mean over seeds, and the Markdown tables."""
 
 import json
@@ -20,13 +21,17 @@ COLUMNS = [
     ("coverage_masked", "coverage masked", 3),
     ("coverage_unmasked", "coverage unmasked", 3),
     ("coverage_ratio", "coverage ratio masked / unmasked", 3),
+    ("grid_ghost_cells", "grid ghost cells", 1),
+    ("unmasked_grid_ghost_cells", "ghost cells unmasked", 1),
+    ("grid_precision", "grid precision", 3),
+    ("grid_recall", "grid recall", 3),
 ]
 
 
 def run_paths(out_dir):
     """The files of one run in `out_dir`, by role."""
     names = {"trajectory": "trajectory.txt", "map": "map.pcd", "map_unmasked": "map_unmasked.pcd",
-             "objects": "objects.txt", "summary": "summary.json",
+             "grid": "grid.yaml", "objects": "objects.txt", "summary": "summary.json",
              "eval_objects": "eval_objects.json", "eval_map": "eval_map.json",
              "eval_map_unmasked": "eval_map_unmasked.json"}
     return {role: os.path.join(out_dir, name) for role, name in names.items()}
@@ -38,14 +43,15 @@ def run_commands(bin_dir, folder, paths, extra_args=()):
     def tool(name):
         return os.path.join(bin_dir, name)
     run = [tool("dslam_run_dataset"), "--dataset", folder, "--trajectory", paths["trajectory"],
-           "--map", paths["map"], "--map-unmasked", paths["map_unmasked"],
+           "--map", paths["map"], "--map-unmasked", paths["map_unmasked"], "--grid", paths["grid"],
            "--objects", paths["objects"], "--summary", paths["summary"], "--quiet"]
     run += list(extra_args)
     common = ["--dataset", folder, "--trajectory", paths["trajectory"]]
     objects = [tool("dslam_eval_objects")] + common + ["--objects", paths["objects"], "--json",
                                                        paths["eval_objects"]]
-    masked = [tool("dslam_eval_map")] + common + ["--map", paths["map"], "--json",
-                                                  paths["eval_map"]]
+    masked = [tool("dslam_eval_map")] + common + ["--map", paths["map"], "--grid", paths["grid"],
+                                                  "--unmasked-map", paths["map_unmasked"],
+                                                  "--json", paths["eval_map"]]
     unmasked = [tool("dslam_eval_map")] + common + ["--map", paths["map_unmasked"], "--json",
                                                     paths["eval_map_unmasked"]]
     return [run, objects, masked, unmasked]
@@ -73,6 +79,10 @@ def run_numbers(eval_objects, eval_map, eval_map_unmasked):
         "coverage_unmasked": eval_map_unmasked.get("static_coverage"),
         "coverage_ratio": ratio(eval_map.get("static_coverage"),
                                 eval_map_unmasked.get("static_coverage")),
+        "grid_ghost_cells": eval_map.get("grid_ghost_cells"),
+        "unmasked_grid_ghost_cells": eval_map.get("unmasked_grid_ghost_cells"),
+        "grid_precision": eval_map.get("grid_precision"),
+        "grid_recall": eval_map.get("grid_recall"),
     }
 
 

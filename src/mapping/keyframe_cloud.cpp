@@ -62,16 +62,27 @@ ColouredCloud BackProjectKeyFrame(const RgbdFrame& frame, const cv::Mat& mask,
   return cloud;
 }
 
-cv::Mat DynamicPixelMask(const KeyFrameRecord& keyframe, const DynamicMaskConfig& config) {
-  const DynamicMask mask =
-      ComputeDynamicMask(keyframe.frame, keyframe.T_world_camera, keyframe.points, config);
-  cv::Mat pixels = cv::Mat::zeros(keyframe.frame.depth_m.size(), CV_8UC1);
+cv::Mat PixelMask(const DynamicMask& mask, const cv::Size& image_size) {
+  cv::Mat pixels = cv::Mat::zeros(image_size, CV_8UC1);
   if (mask.labels.empty() || mask.regions.empty()) return pixels;
   const int d = mask.decimation;
   const cv::Mat cells = mask.labels != 0;  // CV_8UC1, 255 on masked cells
   cv::resize(cells, pixels(cv::Rect(0, 0, cells.cols * d, cells.rows * d)),
              cv::Size(cells.cols * d, cells.rows * d), 0, 0, cv::INTER_NEAREST);
   return pixels;
+}
+
+cv::Mat DynamicPixelMask(const KeyFrameRecord& keyframe, const DynamicMaskConfig& config) {
+  const DynamicMask mask =
+      ComputeDynamicMask(keyframe.frame, keyframe.T_world_camera, keyframe.points, config);
+  return PixelMask(mask, keyframe.frame.depth_m.size());
+}
+
+ColouredCloud BackProjectMasked(const RgbdFrame& frame, const DynamicMask& mask,
+                                const BackProjection& options) {
+  cv::Mat outside;  // 255 off the mask: BackProjectKeyFrame leaves those pixels out
+  cv::bitwise_not(PixelMask(mask, frame.depth_m.size()), outside);
+  return BackProjectKeyFrame(frame, outside, options);
 }
 
 }  // namespace dslam

@@ -207,8 +207,8 @@ ColouredCloud StaticMapper::Cloud() const {
 
 StaticMapRays StaticMapper::Rays() const {
   StaticMapRays rays;
-  for (const ColouredPoint& point : Cloud()) rays.points_world.push_back(point.p);
   const std::lock_guard<std::mutex> lock(mutex_);
+  for (const ColouredPoint& point : voxels_.Points()) rays.points_world.push_back(point.p);
   const auto add_view = [&](const Eigen::Isometry3d& T_world_camera, const ColouredCloud& points) {
     GridView view;
     view.camera_world = T_world_camera.translation();

@@ -1,5 +1,9 @@
 #include "dslam/ros/objects_publisher.h"
 
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "dslam/MovingObjects.h"
@@ -15,10 +19,17 @@ ObjectsPublisher::ObjectsPublisher(ros::NodeHandle& nh, const Config& config, Wo
   if (!enabled_) return;
   objects_pub_ = nh.advertise<dslam::MovingObjects>("moving_objects", 5);
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("moving_object_markers", 5);
+  obstacles_pub_ = nh.advertise<sensor_msgs::PointCloud2>("obstacles", 5);
+  obstacle_points_.pixel_step = config.map.pixel_step;
+  obstacle_points_.min_depth_m = config.depth_noise.min_depth_m;
+  obstacle_points_.max_depth_m = config.depth_noise.max_depth_m;
+  obstacle_points_.voxel_size_m = config.map.voxel_size_m;
 }
 
 bool ObjectsPublisher::Wanted() const {
-  return enabled_ && (objects_pub_.getNumSubscribers() > 0 || markers_pub_.getNumSubscribers() > 0);
+  return enabled_ &&
+         (objects_pub_.getNumSubscribers() > 0 || markers_pub_.getNumSubscribers() > 0 ||
+          obstacles_pub_.getNumSubscribers() > 0);
 }
 
 void ObjectsPublisher::Publish(const RgbdFrame& frame, const FrameResult& result,
@@ -46,6 +57,29 @@ void ObjectsPublisher::TrackAndPublish(const RgbdFrame& frame, const FrameResult
       MakeMovingObjects(objects_.Process(frame, result), T_frame_world, header);
   if (objects_pub_.getNumSubscribers() > 0) objects_pub_.publish(message);
   if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(MakeObjectMarkers(message));
+  if (obstacles_pub_.getNumSubscribers() > 0) {
+    PublishObstacles(frame, result, header, T_frame_world);
+  }
+}
+
+void ObjectsPublisher::PublishObstacles(const RgbdFrame& frame, const FrameResult& result,
+                                        const std_msgs::Header& header,
+                                        const Eigen::Isometry3d& T_frame_world) {
+  pcl::PointCloud<pcl::PointXYZ> points;
+  if (result.has_pose) {  // without a pose there is no mask (an empty cloud: nobody known)
+    const Eigen::Isometry3f T =
+        (T_frame_world * result.T_world_camera).cast<float>();  // optical -> published
+    for (const ColouredPoint& point :
+         BackProjectMasked(frame, objects_.last_mask(), obstacle_points_)) {
+      pcl::PointXYZ q;
+      q.getVector3fMap() = T * point.p;
+      points.push_back(q);
+    }
+  }
+  sensor_msgs::PointCloud2 message;
+  pcl::toROSMsg(points, message);
+  message.header = header;
+  obstacles_pub_.publish(message);
 }
 
 }  // namespace ros_layer

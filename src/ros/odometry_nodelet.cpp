@@ -42,6 +42,7 @@ OdometryNodelet::~OdometryNodelet() {
     LogBackgroundErrors();
   }
   map_publisher_.reset();  // stops its timer and service (the worker used it until now)
+  grid_publisher_.reset();
 }
 
 namespace {
@@ -112,6 +113,8 @@ void OdometryNodelet::onInit() {
       config_.backend_threads ? WorkerMode::kThreaded : WorkerMode::kSynchronous);
   keyframe_map_publisher_ = std::make_unique<KeyFrameMapPublisher>(nh, *slam_, loop_closing_);
   if (mapper_) map_publisher_ = std::make_unique<StaticMapPublisher>(nh, config_, mapper_);
+  if (mapper_)
+    grid_publisher_ = std::make_unique<GridPublisher>(nh, config_, slam_->config(), mapper_);
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
   static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();

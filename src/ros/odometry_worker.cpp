@@ -177,6 +177,7 @@ void OdometryNodelet::Publish(const Input& input, const RgbdFrame& frame,
   publisher_->Publish(result, frame, header, T_base_camera, Counters(), latency_ms);
   const WorldDataFrame world = publisher_->WorldData(T_base_camera);
   if (map_publisher_) map_publisher_->SetWorldFrame(world.T_frame_world);
+  if (grid_publisher_) grid_publisher_->SetWorldFrame(world.T_frame_world);
   std_msgs::Header world_header = header;
   world_header.frame_id = world.frame_id;
   objects_publisher_->Publish(frame, result, world_header, world.T_frame_world);

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "dslam/mapping/coloured_cloud.h"
+#include "dslam/mapping/dynamic_mask.h"
 #include "dslam/mapping/static_mapper.h"
 #include "mapping/mapping_scenes.h"
 
@@ -51,6 +53,26 @@ TEST(StaticMapper, CorrectionsMoveTheWindowsPointsUntilTheKeyframeLeavesIt) {
   for (const ColouredPoint& point : mapper.Cloud()) {
     EXPECT_NEAR(point.p.z(), kPlaneDepthM + 0.2, 1e-5);
   }
+}
+
+TEST(StaticMapper, RaysGiveTheFusedPointsAndEveryKeptKeyFramesView) {
+  // The grid's input: a keyframe still in the window gives its view (rays) but no obstacle
+  // points (a walker there has not been seen through yet); fused, its points join.
+  StaticMapper mapper(MapTestConfig());
+  const KeyFrameRecord keyframe = MakeKeyFrame(0, Wall(kPlaneDepthM));
+  mapper.OnKeyFrames({keyframe}, WindowOf({keyframe}));
+  StaticMapRays rays = mapper.Rays();
+  EXPECT_TRUE(rays.points_world.empty());
+  ASSERT_EQ(rays.views.size(), 1u);
+  EXPECT_FALSE(rays.views[0].points_world.empty());
+  EXPECT_EQ(rays.views[0].camera_world, Eigen::Vector3d::Zero());
+  for (const Eigen::Vector3f& p : rays.views[0].points_world) {
+    EXPECT_NEAR(p.z(), kPlaneDepthM, 0.05);  // the wall, in the world (the keyframe's pose)
+  }
+  mapper.FuseWindow();
+  rays = mapper.Rays();
+  EXPECT_EQ(rays.points_world.size(), mapper.Cloud().size());
+  ASSERT_EQ(rays.views.size(), 1u);  // kept for re-fusion: still a view
 }
 
 TEST(StaticMapper, ALoopCorrectionReFusesFusedKeyFramesAtTheirCorrectedPoses) {
@@ -120,6 +142,27 @@ size_t VoxelsOfSamples(double depth_m, bool inside_box) {
     }
   }
   return keys.size();
+}
+
+TEST(KeyFrameCloud, MaskedPixelsBackProjectToThePeopleOnly) {
+  // The obstacles of a frame: a mask of 10 px cells over the box [250, 390) x [180, 300) in front
+  // of the wall gives the box's points only, one per 5 cm voxel, at the box's depth.
+  const KeyFrameRecord keyframe =
+      MakeKeyFrame(0, test::WallWithBox(kPlaneDepthM, 1.51f, 250, 390, 180, 300));
+  DynamicMask mask;
+  mask.decimation = 10;
+  mask.labels = cv::Mat::zeros(48, 64, CV_16UC1);
+  mask.labels(cv::Rect(25, 18, 14, 12)).setTo(1);  // cells of pixels [250, 390) x [180, 300)
+  mask.regions.resize(1);
+  mask.regions[0].label = 1;
+  EXPECT_EQ(cv::countNonZero(PixelMask(mask, cv::Size(640, 480))), 140 * 120);
+  BackProjection options;
+  options.voxel_size_m = 0.05;
+  const ColouredCloud people = BackProjectMasked(keyframe.frame, mask, options);
+  ASSERT_FALSE(people.empty());
+  EXPECT_EQ(people.size(), VoxelsOfSamples(1.51, true));
+  for (const ColouredPoint& point : people) EXPECT_NEAR(point.p.z(), 1.51f, 0.05f);
+  EXPECT_TRUE(BackProjectMasked(keyframe.frame, DynamicMask(), options).empty());  // nobody
 }
 
 TEST(StaticMapper, DynamicMasksLeaveTheMovingPixelsOut) {

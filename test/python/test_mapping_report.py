@@ -20,8 +20,13 @@ def eval_objects(found, centroid, velocity, false, switches):
             "velocity_error_median_mps": velocity, "false_share": false, "id_switches": switches}
 
 
-def eval_map(ghost, coverage):
-    return {"ghost_share": ghost, "static_coverage": coverage, "map_points": 1000}
+def eval_map(ghost, coverage, grid=None):
+    """dslam_eval_map's JSON; `grid`: (ghost cells, unmasked ghost cells, precision, recall)."""
+    numbers = {"ghost_share": ghost, "static_coverage": coverage, "map_points": 1000}
+    if grid is not None:
+        numbers.update(zip(("grid_ghost_cells", "unmasked_grid_ghost_cells", "grid_precision",
+                            "grid_recall"), grid))
+    return numbers
 
 
 class MappingReportTest(unittest.TestCase):
@@ -54,6 +59,9 @@ class MappingReportTest(unittest.TestCase):
         self.assertEqual(objects[0], "/bin/dslam_eval_objects")
         self.assertEqual(objects[objects.index("--objects") + 1], "/out/objects.txt")
         self.assertEqual(masked[masked.index("--map") + 1], "/out/map.pcd")
+        self.assertEqual(run[run.index("--grid") + 1], "/out/grid.yaml")
+        self.assertEqual(masked[masked.index("--grid") + 1], "/out/grid.yaml")
+        self.assertEqual(masked[masked.index("--unmasked-map") + 1], "/out/map_unmasked.pcd")
         self.assertEqual(unmasked[unmasked.index("--map") + 1], "/out/map_unmasked.pcd")
         self.assertEqual(unmasked[unmasked.index("--json") + 1], "/out/eval_map_unmasked.json")
         for cmd in (objects, masked, unmasked):
@@ -62,7 +70,7 @@ class MappingReportTest(unittest.TestCase):
 
     def test_numbers_mean_and_table(self):
         a = mapping_report.load_run(self.write_run(
-            "a", eval_objects(0.9, 0.10, 0.20, 0.05, 2), eval_map(0.002, 0.45),
+            "a", eval_objects(0.9, 0.10, 0.20, 0.05, 2), eval_map(0.002, 0.45, (3, 700, 0.9, 1.0)),
             eval_map(0.08, 0.50)))
         b = mapping_report.load_run(self.write_run(
             "b", eval_objects(0.8, 0.14, 0.30, 0.15, 5), eval_map(0.004, 0.40),
@@ -79,7 +87,8 @@ class MappingReportTest(unittest.TestCase):
         self.assertTrue(lines[0].startswith("| run | found share | centroid median [m] |"))
         self.assertEqual(lines[1].count("---"), len(mapping_report.COLUMNS) + 1)
         self.assertEqual(lines[2], "| walking seed 1 | 0.900 | 0.100 | 0.200 | 0.050 | 2.0 | "
-                                   "0.0020 | 0.0800 | 0.450 | 0.500 | 0.900 |")
+                                   "0.0020 | 0.0800 | 0.450 | 0.500 | 0.900 | 3.0 | 700.0 | "
+                                   "0.900 | 1.000 |")
         self.assertTrue(lines[4].startswith("| walking mean | 0.850 | 0.120 | 0.250 | 0.100 | "
                                             "3.5 | 0.0030 | 0.0900 |"))
 
@@ -92,7 +101,7 @@ class MappingReportTest(unittest.TestCase):
         self.assertIsNone(run["coverage_ratio"])
         row = mapping_report.summary_table([("static_room", run)]).splitlines()[2]
         self.assertEqual(row, "| static_room | n/a | n/a | n/a | 0.000 | 0.0 | 0.0000 | 0.0000 | "
-                              "0.700 | 0.000 | n/a |")
+                              "0.700 | 0.000 | n/a | n/a | n/a | n/a | n/a |")
         mean = mapping_report.mean_numbers([run, dict(run, found_share=0.5)])
         self.assertEqual(mean["found_share"], 0.5)  # the mean of the runs that have a value
 

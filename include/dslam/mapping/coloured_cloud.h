@@ -13,6 +13,7 @@
 #include "dslam/backend/keyframe_observer.h"
 #include "dslam/core/objects_config.h"
 #include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/dynamic_mask.h"
 
 namespace dslam {
 
@@ -53,5 +54,14 @@ ColouredCloud BackProjectKeyFrame(const RgbdFrame& frame, const cv::Mat& mask,
 /// dynamic_mask.h (ComputeDynamicMask of the keyframe's frame, pose and point labels), each
 /// cell's label on its pixels; pixels beyond the last whole cell are 0.
 cv::Mat DynamicPixelMask(const KeyFrameRecord& keyframe, const DynamicMaskConfig& config);
+
+/// `mask`'s cells as pixels: CV_8UC1 of `image_size`, 255 on masked cells, 0 elsewhere (pixels
+/// beyond the last whole cell are 0).
+cv::Mat PixelMask(const DynamicMask& mask, const cv::Size& image_size);
+
+/// The pixels of `frame` on `mask` (moving things now) with a depth in range, back-projected
+/// into the optical frame [m] as BackProjectKeyFrame does: the points of the people in view.
+ColouredCloud BackProjectMasked(const RgbdFrame& frame, const DynamicMask& mask,
+                                const BackProjection& options);
 
 }  // namespace dslam

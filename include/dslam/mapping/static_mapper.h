@@ -52,7 +52,9 @@ struct StaticMapStats {
 
 /// What an occupancy grid is made of (BuildOccupancyGrid), world (odometry) frame.
 struct StaticMapRays {
-  std::vector<Eigen::Vector3f> points_world;  ///< [m] the map's points, as Cloud() gives them
+  /// [m] the points of the map fused for good (one per voxel): not the window's, whose people
+  /// the free-space check has not seen through yet (a walker in the newest keyframes).
+  std::vector<Eigen::Vector3f> points_world;
   /// The rays of the keyframes whose points the mapper keeps: the newest tracking.max_keyframes
   /// fused ones (their fused points) and the window's (their points), oldest first.
   std::vector<GridView> views;
@@ -80,7 +82,8 @@ class StaticMapper : public KeyFrameObserver {
   /// keyframes' points at their current poses, one per voxel not yet in the fused map.
   ColouredCloud Cloud() const;
 
-  /// The map's points and the rays of the keyframes it keeps, at their current poses.
+  /// The map's points fused for good and the rays of the keyframes it keeps (the window's
+  /// too), at their current poses.
   StaticMapRays Rays() const;
 
   StaticMapStats stats() const;

@@ -1,9 +1,11 @@
 #pragma once
-// Publishes the moving objects of each frame: dslam/MovingObjects `moving_objects` and the
-// MarkerArray `moving_object_markers` (object_conversions.h), in the frame of the tracker's world
-// data (WorldDataFrame: map_frame, or odom_frame without publish_map_tf). The dynamic
-// mask and the tracker (part mapping, MovingObjectTracker) run after Slam::ProcessFrame, only
-// while objects.enabled and someone subscribes to either topic (a new subscriber starts with
+// Publishes the moving objects of each frame: dslam/MovingObjects `moving_objects`, the
+// MarkerArray `moving_object_markers` (object_conversions.h) and the PointCloud2 `obstacles` (the
+// depth of the frame's dynamic-mask pixels: the people in view now, fields x y z, for a costmap's
+// obstacle layer), in the frame of the tracker's world data (WorldDataFrame: map_frame, or
+// odom_frame without publish_map_tf), stamped with the frame. The dynamic mask and the tracker
+// (part mapping, MovingObjectTracker) run after Slam::ProcessFrame, only while objects.enabled
+// and someone subscribes to any of the topics (a new subscriber starts with
 // fresh tracks): threaded (~backend_threads), on an OrderedWorker thread of their own that takes
 // the frames in order (the odometry's worker only hands each frame over; it waits while two
 // frames are queued); otherwise on the odometry's worker thread. The tracker and the publishers'
@@ -18,6 +20,7 @@
 #include "dslam/core/config.h"
 #include "dslam/core/ordered_worker.h"
 #include "dslam/core/rgbd_frame.h"
+#include "dslam/mapping/coloured_cloud.h"
 #include "dslam/mapping/moving_object_tracker.h"
 #include "dslam/tracking/frame_result.h"
 
@@ -51,10 +54,15 @@ class ObjectsPublisher {
   void TrackAndPublish(const RgbdFrame& frame, const FrameResult& result,
                        const std_msgs::Header& header, const Eigen::Isometry3d& T_frame_world);
 
+  /// The people's points of the frame just tracked (objects_.last_mask()) as `obstacles`.
+  void PublishObstacles(const RgbdFrame& frame, const FrameResult& result,
+                        const std_msgs::Header& header, const Eigen::Isometry3d& T_frame_world);
+
   bool enabled_;
   bool tracking_ = false;  ///< the tracker was handed the previous frame (the caller's)
   MovingObjectTracker objects_;
-  ros::Publisher objects_pub_, markers_pub_;
+  BackProjection obstacle_points_;  ///< map.pixel_step, depth_noise's range, map.voxel_size_m
+  ros::Publisher objects_pub_, markers_pub_, obstacles_pub_;
   OrderedWorker worker_;  ///< last: its destructor runs the queued frames before the above go
 };
 

@@ -48,6 +48,7 @@
 #include "dslam/io/private_folder.h"
 #include "dslam/io/trajectory_recorder.h"
 #include "dslam/ros/frame_publisher.h"
+#include "dslam/ros/grid_publisher.h"
 #include "dslam/ros/input_checks.h"
 #include "dslam/ros/keyframe_map_publisher.h"
 #include "dslam/ros/latest_slot.h"
@@ -144,6 +145,7 @@ class OdometryNodelet : public nodelet::Nodelet {
   // null unless backend.enabled and loop_closing.enabled (own lock; loop_closing.h)
   std::shared_ptr<LoopClosing> loop_closing_;
   std::unique_ptr<StaticMapPublisher> map_publisher_;  // timer and service (own lock)
+  std::unique_ptr<GridPublisher> grid_publisher_;      // timer and service (own lock)
   std::unique_ptr<StampCheck> stamps_;                 // used by the worker only
   std::shared_ptr<const PinholeCamera> yaml_camera_;
   std::optional<Eigen::Isometry3d> T_base_camera_;

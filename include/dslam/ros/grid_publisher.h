@@ -1,0 +1,74 @@
+#pragma once
+// Publishes the occupancy grid of the static map (BuildOccupancyGrid, part mapping, from the
+// StaticMapper's points and rays): nav_msgs/OccupancyGrid `grid` (latched, in the frame of the
+// tracker's world data: WorldDataFrameId, map_frame or odom_frame; its origin pose places the
+// grid frame, z up, in that frame), rebuilt by a wall-clock timer at grid.rate_hz, only while
+// subscribed and only when the map or its transform changed; and the service `save_grid`
+// (dslam/SaveGrid) writing map_server's YAML and PGM pair. Up is the published frame's z axis
+// (the base frame's, REP 103: the camera mount from TF or the default mount), replaced by the
+// normal of the floor when the map shows one (FloorOf).
+//
+// Threads: the timer and the service run on ROS callback threads, SetWorldFrame on the worker;
+// the transform and what was last published are guarded by this class's mutex, the map by the
+// mapper's own. Neither is held together with Slam's map mutex (Slam calls the mapper without it).
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/ros.h>
+#include <Eigen/Geometry>
+
+#include "dslam/SaveGrid.h"
+#include "dslam/core/config.h"
+#include "dslam/mapping/occupancy_grid.h"
+#include "dslam/mapping/static_mapper.h"
+#include "dslam/ros/node_config.h"
+
+namespace dslam {
+namespace ros_layer {
+
+/// `grid` as a message in the frame T_frame_world maps the tracker's world to: cell (i, j) at
+/// data[j * width + i], the origin the pose of cell (0, 0)'s corner, occupied 100, free 0,
+/// unknown -1.
+nav_msgs::OccupancyGrid ToMessage(const OccupancyGrid& grid,
+                                  const Eigen::Isometry3d& T_frame_world);
+
+/// Owns the grid's topic, timer and service.
+class GridPublisher {
+ public:
+  /// Advertises `grid` and `save_grid` on `nh` (relative names) and starts the timer; `config`:
+  /// grid (band, floor, rate, cell size) and map.voxel_size_m (the cell size when grid's is 0).
+  GridPublisher(ros::NodeHandle& nh, const NodeConfig& node_config, const Config& config,
+                std::shared_ptr<const StaticMapper> mapper);
+  /// Stops the timer (waits for a callback in progress).
+  ~GridPublisher();
+
+  /// The transform of the tracker's world into the published frame, WorldDataFrame::
+  /// T_frame_world [m]. Nothing is published before it is known.
+  void SetWorldFrame(const Eigen::Isometry3d& T_frame_world);
+
+ private:
+  void OnTimer();
+  bool OnSave(dslam::SaveGrid::Request& req, dslam::SaveGrid::Response& res);
+  /// The grid of the map now, up the published frame's z axis in the tracker's world.
+  OccupancyGrid Build(const Eigen::Isometry3d& T_frame_world) const;
+
+  std::string frame_id_;  ///< WorldDataFrameId(config)
+  GridConfig config_;
+  double cell_size_m_;
+  std::shared_ptr<const StaticMapper> mapper_;
+  ros::Publisher grid_pub_;
+  ros::ServiceServer save_srv_;
+  ros::WallTimer timer_;
+  std::mutex mutex_;                                ///< guards the three members below
+  std::optional<Eigen::Isometry3d> T_frame_world_;  ///< set by the worker
+  std::optional<uint64_t> published_revision_;      ///< of the last message sent
+  Eigen::Isometry3d published_T_frame_world_ = Eigen::Isometry3d::Identity();  ///< of the same
+};
+
+}  // namespace ros_layer
+}  // namespace dslam

@@ -1,0 +1,114 @@
+#include "dslam/ros/grid_publisher.h"
+
+#include <exception>
+
+namespace dslam {
+namespace ros_layer {
+
+nav_msgs::OccupancyGrid ToMessage(const OccupancyGrid& grid,
+                                  const Eigen::Isometry3d& T_frame_world) {
+  nav_msgs::OccupancyGrid message;
+  message.info.resolution = static_cast<float>(grid.cell_size_m);
+  message.info.width = static_cast<uint32_t>(grid.width);
+  message.info.height = static_cast<uint32_t>(grid.height);
+  Eigen::Isometry3d T_grid_origin = Eigen::Isometry3d::Identity();
+  T_grid_origin.translation() << grid.origin_m.x(), grid.origin_m.y(), 0.0;
+  const Eigen::Isometry3d T_frame_origin = T_frame_world * grid.T_world_grid * T_grid_origin;
+  const Eigen::Quaterniond q(T_frame_origin.rotation());
+  message.info.origin.position.x = T_frame_origin.translation().x();
+  message.info.origin.position.y = T_frame_origin.translation().y();
+  message.info.origin.position.z = T_frame_origin.translation().z();
+  message.info.origin.orientation.x = q.x();
+  message.info.origin.orientation.y = q.y();
+  message.info.origin.orientation.z = q.z();
+  message.info.origin.orientation.w = q.w();
+  message.data.assign(grid.cells.begin(), grid.cells.end());
+  return message;
+}
+
+GridPublisher::GridPublisher(ros::NodeHandle& nh, const NodeConfig& node_config,
+                             const Config& config, std::shared_ptr<const StaticMapper> mapper)
+    : frame_id_(WorldDataFrameId(node_config)),
+      config_(config.grid),
+      cell_size_m_(config.grid.cell_size_m > 0.0 ? config.grid.cell_size_m
+                                                 : config.map.voxel_size_m),
+      mapper_(std::move(mapper)) {
+  grid_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("grid", 1, /*latch=*/true);
+  save_srv_ = nh.advertiseService("save_grid", &GridPublisher::OnSave, this);
+  timer_ = nh.createWallTimer(ros::WallDuration(1.0 / config_.rate_hz),
+                              [this](const ros::WallTimerEvent&) { OnTimer(); });
+}
+
+GridPublisher::~GridPublisher() {
+  timer_.stop();
+  save_srv_.shutdown();
+}
+
+void GridPublisher::SetWorldFrame(const Eigen::Isometry3d& T_frame_world) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  T_frame_world_ = T_frame_world;
+}
+
+OccupancyGrid GridPublisher::Build(const Eigen::Isometry3d& T_frame_world) const {
+  const StaticMapRays rays = mapper_->Rays();
+  // The published frame's z axis (the base frame's up) in the tracker's world; the world is the
+  // first frame's optical frame, the grid's reference camera.
+  const Eigen::Vector3d up_world = T_frame_world.rotation().transpose() * Eigen::Vector3d::UnitZ();
+  return BuildOccupancyGrid(rays.points_world, rays.views, Eigen::Isometry3d::Identity(), up_world,
+                            cell_size_m_, config_);
+}
+
+void GridPublisher::OnTimer() {
+  if (grid_pub_.getNumSubscribers() == 0) return;
+  Eigen::Isometry3d T_frame_world;
+  const uint64_t revision = mapper_->revision();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!T_frame_world_ || (published_revision_ == revision &&
+                            published_T_frame_world_.matrix() == T_frame_world_->matrix())) {
+      return;
+    }
+    T_frame_world = *T_frame_world_;
+    published_revision_ = revision;
+    published_T_frame_world_ = T_frame_world;
+  }
+  try {
+    const OccupancyGrid grid = Build(T_frame_world);  // outside this class's lock
+    nav_msgs::OccupancyGrid message = ToMessage(grid, T_frame_world);
+    message.header.stamp = ros::Time::now();
+    message.header.frame_id = frame_id_;
+    message.info.map_load_time = message.header.stamp;
+    grid_pub_.publish(message);
+    ROS_INFO_ONCE("dslam: grid %d x %d cells of %.3f m, floor %s", grid.width, grid.height,
+                  grid.cell_size_m,
+                  grid.floor.from_plane ? "a horizontal plane of the map"
+                                        : "grid.floor_height_m below the first camera");
+  } catch (const std::exception& e) {
+    ROS_ERROR_THROTTLE(10.0, "dslam: grid not published: %s", e.what());
+  }
+}
+
+bool GridPublisher::OnSave(dslam::SaveGrid::Request& req, dslam::SaveGrid::Response& res) {
+  try {
+    Eigen::Isometry3d T_frame_world = Eigen::Isometry3d::Identity();
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (T_frame_world_) T_frame_world = *T_frame_world_;
+    }
+    const OccupancyGrid grid = Build(T_frame_world);
+    WriteMapServerFiles(grid, req.path);
+    res.occupied_cells = grid.Count(kCellOccupied);
+    res.free_cells = grid.Count(kCellFree);
+    res.success = true;
+    res.message = "wrote " + std::to_string(grid.width) + " x " + std::to_string(grid.height) +
+                  " cells (" + std::to_string(res.occupied_cells) + " occupied, " +
+                  std::to_string(res.free_cells) + " free) to " + req.path;
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+  }
+  return true;
+}
+
+}  // namespace ros_layer
+}  // namespace dslam

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""rostest: plays a synthetic bag of two walkers (dslam_synth `walking`, 90 frames) into the dslam
+nodelet and checks the occupancy grid: `grid` (nav_msgs/OccupancyGrid, latched, in the map frame)
+arrives with occupied and free cells, equals the files `save_grid` writes (map_server's YAML with
+dslam's keys and the PGM), the first camera's cell is free, and the cells of the walkers' path
+(the truth's objects.txt: each walker's visible centroid in every frame) are free, not occupied:
+their pixels are never fused and rays pass where they stood."""
+
+import os
+import tempfile
+import unittest
+
+import numpy as np
+import rospy
+import rostest
+from nav_msgs.msg import OccupancyGrid
+
+from dslam.srv import SaveGrid
+
+import test_scenes  # beside this file
+from rostest_helpers import Recorder, play_bag, tum_matrix  # beside this file
+
+FRAMES = 90
+# Measured on these frames offline (dslam_run_dataset --grid, the same defaults): 8 of the 89
+# path cells occupied (0.09), 81 free; the bounds leave twice the occupied share.
+PATH_OCCUPIED_MAX = 0.18
+PATH_FREE_MIN = 0.8
+
+
+def read_files(yaml_path):
+    """(keys, cells as in the message: row j from the lowest y, 100 / 0 / -1)."""
+    keys = {}
+    with open(yaml_path) as handle:
+        for line in handle:
+            if line.strip() and not line.startswith("#"):
+                key, value = line.split(":", 1)
+                keys[key.strip()] = value.strip()
+    with open(os.path.join(os.path.dirname(yaml_path), keys["image"]), "rb") as handle:
+        fields = handle.read().split(b"\n", 3)
+    width, height = (int(v) for v in fields[2].split())
+    pixels = np.frombuffer(fields[3][len(b"255\n"):], dtype=np.uint8)[: width * height]
+    image = pixels.reshape(height, width)[::-1]  # the PGM's first row is the highest y
+    cells = np.full(image.shape, -1, dtype=np.int8)
+    cells[image == 0] = 100
+    cells[image == 254] = 0
+    return keys, cells
+
+
+def numbers(text):
+    return [float(v) for v in text.strip("[]").split(",")]
+
+
+def path_cells(folder, keys):
+    """The grid cells (i, j) of the walkers' visible centroids (objects.txt, truth world), placed
+    in the first frame's optical frame by the first ground-truth pose, then in the grid frame."""
+    first = np.loadtxt(os.path.join(folder, "groundtruth.txt"))[0]
+    T_world0 = tum_matrix(first)
+    x, y, z, qx, qy, qz, qw = numbers(keys["T_world_grid"])
+    T_world_grid = tum_matrix([0.0, x, y, z, qx, qy, qz, qw])
+    T_grid_truth = np.linalg.inv(T_world_grid) @ np.linalg.inv(T_world0)
+    objects = np.loadtxt(os.path.join(folder, "objects.txt"))
+    p = np.c_[objects[:, 2:5], np.ones(len(objects))] @ T_grid_truth.T
+    s, origin = float(keys["resolution"]), numbers(keys["origin"])
+    return {(int(np.floor((q[0] - origin[0]) / s)), int(np.floor((q[1] - origin[1]) / s)))
+            for q in p}
+
+
+class GridTest(unittest.TestCase):
+    def test_grid_topic_files_and_walkers_path(self):
+        rospy.init_node("grid_check")
+        folder, bag = test_scenes.scene("walking", FRAMES, with_bag=True)
+        rec = Recorder()
+        rec.subscribe("/dslam/grid", OccupancyGrid, "grid", queue_size=10)
+        play_bag(bag, recorder=rec, settle_s=3.0)  # the grid is rebuilt at 1 Hz after a change
+        message = rec.last("grid")
+        self.assertEqual(message.header.frame_id, "map")
+        data = np.array(message.data, dtype=np.int8).reshape(message.info.height,
+                                                             message.info.width)
+        late = rospy.wait_for_message("/dslam/grid", OccupancyGrid, timeout=5.0)  # latched
+        self.assertEqual(late.data, message.data)
+
+        rospy.wait_for_service("/dslam/save_grid", timeout=10.0)
+        path = os.path.join(tempfile.mkdtemp(prefix="dslam_grid_check_"), "grid.yaml")
+        reply = rospy.ServiceProxy("/dslam/save_grid", SaveGrid)(path)
+        self.assertTrue(reply.success, reply.message)
+        keys, cells = read_files(path)
+        rospy.loginfo("grid_check: %s", reply.message)
+        self.assertEqual(cells.shape, data.shape)
+        np.testing.assert_array_equal(cells, data)  # nothing changed since the last frame
+        self.assertEqual(reply.occupied_cells, int((cells == 100).sum()))
+        self.assertEqual(reply.free_cells, int((cells == 0).sum()))
+        self.assertGreater(reply.occupied_cells, 200)  # walls and boxes (1146 offline)
+        self.assertGreater(reply.free_cells, 1000)     # the room's floor (5323 offline)
+        origin, s = numbers(keys["origin"]), float(keys["resolution"])
+        camera = (int(np.floor(-origin[0] / s)), int(np.floor(-origin[1] / s)))
+        self.assertEqual(cells[camera[1], camera[0]], 0, "the first camera's cell is not free")
+
+        walked = [c for c in path_cells(folder, keys)
+                  if 0 <= c[0] < cells.shape[1] and 0 <= c[1] < cells.shape[0]]
+        values = [cells[j, i] for i, j in walked]
+        occupied = sum(v == 100 for v in values) / len(values)
+        free = sum(v == 0 for v in values) / len(values)
+        rospy.loginfo("grid_check: %d path cells, %.3f occupied, %.3f free", len(values),
+                      occupied, free)
+        self.assertGreater(len(values), 30)
+        self.assertLessEqual(occupied, PATH_OCCUPIED_MAX)
+        self.assertGreaterEqual(free, PATH_FREE_MIN)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("dslam", "grid", GridTest)
