@@ -13,7 +13,7 @@ PACKAGES=(
   ros-core-dev rosbash libnodeletlib-dev libnodeletlib-tools
   libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libcv-bridge-dev libimage-transport-dev
   libpcl-conversions-dev libpcl-dev libceres-dev libcgal-dev libopencv-dev libeigen3-dev
-  libyaml-cpp-dev libgtest-dev libjemalloc-dev
+  libyaml-cpp-dev libgtest-dev libjemalloc-dev liboctomap-dev
   libroscpp-dev libmessage-filters-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev
   libnav-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-dev pluginlib-dev
   ros-message-generation ros-message-runtime

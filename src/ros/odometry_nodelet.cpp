@@ -112,9 +112,11 @@ void OdometryNodelet::onInit() {
       nh, slam_->config(),
       config_.backend_threads ? WorkerMode::kThreaded : WorkerMode::kSynchronous);
   keyframe_map_publisher_ = std::make_unique<KeyFrameMapPublisher>(nh, *slam_, loop_closing_);
-  if (mapper_) map_publisher_ = std::make_unique<StaticMapPublisher>(nh, config_, mapper_);
-  if (mapper_)
+  if (mapper_) {
+    map_publisher_ = std::make_unique<StaticMapPublisher>(nh, config_, mapper_,
+                                                          slam_->config().map.voxel_size_m);
     grid_publisher_ = std::make_unique<GridPublisher>(nh, config_, slam_->config(), mapper_);
+  }
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh);
   static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();

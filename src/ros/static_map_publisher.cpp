@@ -5,6 +5,8 @@
 #include <pcl_conversions/pcl_conversions.h>
 #include <sensor_msgs/PointCloud2.h>
 
+#include "dslam/mapping/octomap_file.h"
+
 namespace dslam {
 namespace ros_layer {
 namespace {
@@ -28,10 +30,12 @@ sensor_msgs::PointCloud2 ToMessage(const ColouredCloud& cloud,
 }  // namespace
 
 StaticMapPublisher::StaticMapPublisher(ros::NodeHandle& nh, const NodeConfig& config,
-                                       std::shared_ptr<const StaticMapper> mapper)
-    : frame_id_(WorldDataFrameId(config)), mapper_(std::move(mapper)) {
+                                       std::shared_ptr<const StaticMapper> mapper,
+                                       double voxel_size_m)
+    : frame_id_(WorldDataFrameId(config)), mapper_(std::move(mapper)), voxel_size_m_(voxel_size_m) {
   map_pub_ = nh.advertise<sensor_msgs::PointCloud2>("static_map", 1, /*latch=*/true);
   save_srv_ = nh.advertiseService("save_map", &StaticMapPublisher::OnSave, this);
+  save_octomap_srv_ = nh.advertiseService("save_octomap", &StaticMapPublisher::OnSaveOctoMap, this);
   timer_ = nh.createWallTimer(ros::WallDuration(1.0 / config.static_map_rate_hz),
                               [this](const ros::WallTimerEvent&) { OnTimer(); });
 }
@@ -39,6 +43,7 @@ StaticMapPublisher::StaticMapPublisher(ros::NodeHandle& nh, const NodeConfig& co
 StaticMapPublisher::~StaticMapPublisher() {
   timer_.stop();
   save_srv_.shutdown();
+  save_octomap_srv_.shutdown();
 }
 
 void StaticMapPublisher::SetWorldFrame(const Eigen::Isometry3d& T_frame_world) {
@@ -75,6 +80,21 @@ bool StaticMapPublisher::OnSave(dslam::SaveMap::Request& req, dslam::SaveMap::Re
     res.points = static_cast<int>(cloud.size());
     res.success = true;
     res.message = "wrote " + std::to_string(res.points) + " points to " + req.path;
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+  }
+  return true;
+}
+
+bool StaticMapPublisher::OnSaveOctoMap(dslam::SaveMap::Request& req,
+                                       dslam::SaveMap::Response& res) {
+  try {
+    const OctoMapStats stats = WriteOctoMap(mapper_->Rays(), voxel_size_m_, req.path);
+    res.points = static_cast<int>(stats.occupied_leaves);
+    res.success = true;
+    res.message = "wrote " + std::to_string(stats.occupied_leaves) + " occupied and " +
+                  std::to_string(stats.free_leaves) + " free leaves to " + req.path;
   } catch (const std::exception& e) {
     res.success = false;
     res.message = e.what();

@@ -6,12 +6,14 @@ namespace dslam {
 namespace tools {
 
 MapOutput::MapOutput(const std::string& masked_path, const std::string& unmasked_path,
-                     const std::string& grid_path, const Config& config)
+                     const std::string& grid_path, const std::string& octomap_path,
+                     const Config& config)
     : masked_path_(masked_path),
       unmasked_path_(unmasked_path),
       grid_path_(grid_path),
+      octomap_path_(octomap_path),
       config_(config) {
-  if (!masked_path_.empty() || !grid_path_.empty()) {
+  if (!masked_path_.empty() || !grid_path_.empty() || !octomap_path_.empty()) {
     masked_ = std::make_shared<StaticMapper>(config);
   }
   if (!unmasked_path_.empty()) {
@@ -37,6 +39,9 @@ void MapOutput::Write() {
     masked_points_ = cloud.size();
   }
   if (!grid_path_.empty()) WriteGrid();
+  if (!octomap_path_.empty()) {
+    octomap_ = WriteOctoMap(masked_->Rays(), config_.map.voxel_size_m, octomap_path_);
+  }
   if (unmasked_) {
     unmasked_->FuseWindow();
     const ColouredCloud cloud = unmasked_->Cloud();
@@ -58,6 +63,11 @@ void MapOutput::WriteGrid() {
 }
 
 void MapOutput::Print() const {
+  if (!octomap_path_.empty()) {
+    std::printf("octomap: %zu occupied and %zu free leaves of %.3f m -> %s\n",
+                octomap_.occupied_leaves, octomap_.free_leaves, config_.map.voxel_size_m,
+                octomap_path_.c_str());
+  }
   if (!grid_path_.empty()) {
     std::printf("grid: %d x %d cells of %.3f m, %d occupied, %d free; floor %s -> %s\n",
                 grid_.width, grid_.height, grid_.cell_size_m, grid_.Count(kCellOccupied),
@@ -92,6 +102,10 @@ void MapOutput::AddTo(JsonObject* json) const {
     json->AddInteger("grid_occupied_cells", grid_.Count(kCellOccupied))
         .AddInteger("grid_free_cells", grid_.Count(kCellFree))
         .AddInteger("grid_floor_from_plane", grid_.floor.from_plane ? 1 : 0);
+  }
+  if (!octomap_path_.empty()) {
+    json->AddInteger("octomap_occupied_leaves", static_cast<long>(octomap_.occupied_leaves))
+        .AddInteger("octomap_free_leaves", static_cast<long>(octomap_.free_leaves));
   }
 }
 

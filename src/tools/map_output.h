@@ -4,7 +4,8 @@
 // odometry world frame: the first frame's optical frame). The unmasked map is the same fusion of
 // the same run without dynamic masks and without the free-space check: the static-world
 // baseline. --grid writes the masked map's occupancy grid (occupancy_grid.h) as map_server's
-// YAML and PGM pair, its up the config's grid.up_* in the first frame's optical frame.
+// YAML and PGM pair, its up the config's grid.up_* in the first frame's optical frame; --octomap
+// the masked map as an OctoMap binary file (octomap_file.h) in the trajectory's frame.
 
 #include <memory>
 #include <string>
@@ -13,6 +14,7 @@
 #include "dslam/backend/keyframe_observer.h"
 #include "dslam/core/config.h"
 #include "dslam/eval/json_writer.h"
+#include "dslam/mapping/octomap_file.h"
 #include "dslam/mapping/static_mapper.h"
 
 namespace dslam {
@@ -23,9 +25,10 @@ class MapOutput {
  public:
   /// `config`: the run's (config.map for both maps; the unmasked one with dynamic_masks and
   /// free_space_check off; config.grid for the grid). `grid_path`: the grid's YAML (its PGM
-  /// beside it); the masked map is built for it also without `masked_path`.
+  /// beside it), `octomap_path`: the OctoMap file; the masked map is built for them also
+  /// without `masked_path`.
   MapOutput(const std::string& masked_path, const std::string& unmasked_path,
-            const std::string& grid_path, const Config& config);
+            const std::string& grid_path, const std::string& octomap_path, const Config& config);
 
   /// The mappers, for Slam's constructor (empty when no map is asked for).
   std::vector<std::shared_ptr<KeyFrameObserver>> Observers() const;
@@ -44,10 +47,11 @@ class MapOutput {
  private:
   void WriteGrid();
 
-  std::string masked_path_, unmasked_path_, grid_path_;
+  std::string masked_path_, unmasked_path_, grid_path_, octomap_path_;
   Config config_;
   std::shared_ptr<StaticMapper> masked_, unmasked_;
   OccupancyGrid grid_;
+  OctoMapStats octomap_;
   size_t masked_points_ = 0, unmasked_points_ = 0;
 };
 

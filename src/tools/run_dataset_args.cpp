@@ -15,7 +15,7 @@ int Usage() {
          "[--max-frames N] [--quiet]\n"
          "                         [--refined-trajectory OUT.txt] [--threads] [--rate HZ]\n"
          "                         [--objects OUT.txt] [--map OUT.pcd] "
-         "[--map-unmasked OUT.pcd] [--grid OUT.yaml]\n"
+         "[--map-unmasked OUT.pcd] [--grid OUT.yaml] [--octomap OUT.bt]\n"
          "                         [--loop-closing on|off] [--loops OUT.txt] "
          "[--vocabulary FILE]\n"
          "                         [--save-keyframe-map OUT.bin] [--load-keyframe-map IN.bin]\n"
@@ -52,6 +52,8 @@ bool Parse(int argc, char** argv, RunDatasetArgs* args) {
       args->map = value;
     else if (key == "--grid")
       args->grid = value;
+    else if (key == "--octomap")
+      args->octomap = value;
     else if (key == "--map-unmasked")
       args->map_unmasked = value;
     else if (key == "--refined-trajectory")

@@ -21,6 +21,7 @@ struct RunDatasetArgs {
   std::string objects;  ///< --objects: moving objects file (objects_output.h)
   std::string map;      ///< --map: static map PCD (map_output.h)
   std::string grid;     ///< --grid: occupancy grid YAML and PGM (map_output.h)
+  std::string octomap;  ///< --octomap: OctoMap binary file (map_output.h)
   /// --map-unmasked: the same fusion without masks and free-space check, PCD.
   std::string map_unmasked;
   std::string static_points;  ///< --static-points: "on", "off" or empty (the config's value)

@@ -235,7 +235,7 @@ int Run(const Args& args) {
     std::fprintf(stderr, "dslam_run_dataset: loop closing needs the back end: off\n");
   }
   const dslam::TumDataset dataset(args.dataset, args.camera, config.dataset.association_max_dt_s);
-  dslam::tools::MapOutput maps(args.map, args.map_unmasked, args.grid, config);
+  dslam::tools::MapOutput maps(args.map, args.map_unmasked, args.grid, args.octomap, config);
   const std::shared_ptr<const dslam::Vocabulary> vocabulary = RunVocabulary(args, config);
   dslam::tools::LoopOutput loops(
       config, vocabulary,

@@ -10,10 +10,12 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <octomap/OcTree.h>
 #include <yaml-cpp/yaml.h>
 
 #include "dslam/core/config.h"
 #include "dslam/mapping/occupancy_grid.h"
+#include "dslam/mapping/octomap_file.h"
 
 namespace dslam {
 namespace {
@@ -190,6 +192,32 @@ TEST(OccupancyGrid, ReadingAFileThatIsNoGridNamesIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
+  std::remove(path.c_str());
+}
+
+TEST(OctoMapFile, HitsAtTheSurfacesMissesAlongTheRaysReadBackWithLiboctomap) {
+  // The room seen by the camera (rays to its points) and the map's points: the wall and the box
+  // occupied, the air between camera and wall free, behind the wall unknown.
+  const std::vector<Eigen::Vector3f> room = Room();
+  StaticMapRays rays;
+  rays.points_world = room;
+  rays.views = {ViewOf(Camera(), room)};
+  const std::string path = ::testing::TempDir() + "/dslam_octomap_test.bt";
+  const OctoMapStats stats = WriteOctoMap(rays, 0.05, path);
+  EXPECT_GT(stats.occupied_leaves, 0u);
+  EXPECT_GT(stats.free_leaves, 0u);
+  octomap::OcTree tree(0.1);
+  ASSERT_TRUE(tree.readBinary(path));
+  EXPECT_DOUBLE_EQ(tree.getResolution(), 0.05);
+  const auto occupied = [&](double x, double y, double z) {
+    const octomap::OcTreeNode* node = tree.search(x, y, z);
+    return node == nullptr ? -1 : tree.isNodeOccupied(node) ? 1 : 0;
+  };
+  EXPECT_EQ(occupied(4.025, 0.0, 1.0), 1);  // the wall
+  EXPECT_EQ(occupied(2.2, 0.0, 0.4), 1);    // the box's top
+  EXPECT_EQ(occupied(2.0, 0.0, 1.3), 0);    // the air at the camera's height
+  EXPECT_EQ(occupied(1.0, 1.0, 0.6), 0);    // above the floor, beside the ray to the box
+  EXPECT_EQ(occupied(5.0, 0.0, 1.0), -1);   // behind the wall: never seen
   std::remove(path.c_str());
 }
 

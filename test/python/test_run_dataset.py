@@ -192,6 +192,20 @@ class RunDatasetCliTest(unittest.TestCase):
         self.assertGreater(summary["grid_occupied_cells"], 0)
         self.assertGreater(summary["grid_free_cells"], 0)
 
+    def test_octomap_file(self):
+        """--octomap writes OctoMap's binary file (octomap_file.h; the C++ test reads one back
+        with liboctomap): its header lines and the summary's leaf counts."""
+        path = os.path.join(self.tmp, "map.bt")
+        code, summary, _, _ = self.run_tool("octomap", "--octomap", path)
+        self.assertEqual(code, 0)
+        with open(path, "rb") as handle:
+            lines = [handle.readline() for _ in range(7)]
+        self.assertEqual(lines[0], b"# Octomap OcTree binary file\n")
+        self.assertIn(b"id OcTree\n", lines)
+        self.assertIn(b"res 0.05\n", lines)
+        self.assertGreater(summary["octomap_occupied_leaves"], 0)
+        self.assertGreater(summary["octomap_free_leaves"], 0)
+
     def test_save_keyframe_map(self):
         """The header of the keyframe map file (include/dslam/map_file/keyframe_map_file.h):
         version 2, size, checksum, the sequence's camera, the committed vocabulary's identity

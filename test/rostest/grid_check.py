@@ -2,7 +2,8 @@
 """rostest: plays a synthetic bag of two walkers (dslam_synth `walking`, 90 frames) into the dslam
 nodelet and checks the occupancy grid: `grid` (nav_msgs/OccupancyGrid, latched, in the map frame)
 arrives with occupied and free cells, equals the files `save_grid` writes (map_server's YAML with
-dslam's keys and the PGM), the first camera's cell is free, and the cells of the walkers' path
+dslam's keys and the PGM), `save_octomap` writes an OctoMap binary file, the first camera's cell
+is free, and the cells of the walkers' path
 (the truth's objects.txt: each walker's visible centroid in every frame) are free, not occupied:
 their pixels are never fused and rays pass where they stood."""
 
@@ -15,7 +16,7 @@ import rospy
 import rostest
 from nav_msgs.msg import OccupancyGrid
 
-from dslam.srv import SaveGrid
+from dslam.srv import SaveGrid, SaveMap
 
 import test_scenes  # beside this file
 from rostest_helpers import Recorder, play_bag, tum_matrix  # beside this file
@@ -91,6 +92,12 @@ class GridTest(unittest.TestCase):
         self.assertEqual(reply.free_cells, int((cells == 0).sum()))
         self.assertGreater(reply.occupied_cells, 200)  # walls and boxes (1146 offline)
         self.assertGreater(reply.free_cells, 1000)     # the room's floor (5323 offline)
+        octomap = os.path.join(os.path.dirname(path), "map.bt")
+        reply = rospy.ServiceProxy("/dslam/save_octomap", SaveMap)(octomap)
+        self.assertTrue(reply.success, reply.message)
+        self.assertGreater(reply.points, 1000)  # occupied leaves
+        with open(octomap, "rb") as handle:
+            self.assertEqual(handle.readline(), b"# Octomap OcTree binary file\n")
         origin, s = numbers(keys["origin"]), float(keys["resolution"])
         camera = (int(np.floor(-origin[0] / s)), int(np.floor(-origin[1] / s)))
         self.assertEqual(cells[camera[1], camera[0]], 0, "the first camera's cell is not free")

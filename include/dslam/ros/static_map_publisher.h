@@ -2,8 +2,10 @@
 // Publishes the static map (StaticMapper, part mapping, fed by Slam as a keyframe observer):
 // sensor_msgs/PointCloud2 `static_map` (latched, fields x y z rgb, in the frame of the tracker's
 // world data: WorldDataFrameId, map_frame or odom_frame), rebuilt by a wall-clock timer at
-// static_map_rate_hz, only while subscribed and only when the map or its transform changed; and
-// the service `save_map` (dslam/SaveMap) writing a PCD file in the tracker's world frame.
+// static_map_rate_hz, only while subscribed and only when the map or its transform changed; the
+// service `save_map` (dslam/SaveMap) writing a PCD file in the tracker's world frame, and
+// `save_octomap` (dslam/SaveMap: `points` the occupied leaves) writing the map as an OctoMap
+// binary file (octomap_file.h) in the same frame.
 //
 // Threads: the timer and the service run on ROS callback threads, SetWorldFrame on the worker;
 // the transform and what was last published are guarded by this class's mutex, the map by the
@@ -27,9 +29,11 @@ namespace ros_layer {
 /// Owns the static map's topic, timer and service.
 class StaticMapPublisher {
  public:
-  /// Advertises `static_map` and `save_map` on `nh` (relative names) and starts the timer.
+  /// Advertises `static_map`, `save_map` and `save_octomap` on `nh` (relative names) and starts
+  /// the timer.
+  /// `voxel_size_m` [m]: the map's voxel (map.voxel_size_m), the OctoMap's leaf.
   StaticMapPublisher(ros::NodeHandle& nh, const NodeConfig& config,
-                     std::shared_ptr<const StaticMapper> mapper);
+                     std::shared_ptr<const StaticMapper> mapper, double voxel_size_m);
   /// Stops the timer (waits for a callback in progress).
   ~StaticMapPublisher();
 
@@ -41,11 +45,13 @@ class StaticMapPublisher {
  private:
   void OnTimer();
   bool OnSave(dslam::SaveMap::Request& req, dslam::SaveMap::Response& res);
+  bool OnSaveOctoMap(dslam::SaveMap::Request& req, dslam::SaveMap::Response& res);
 
   std::string frame_id_;  ///< WorldDataFrameId(config)
   std::shared_ptr<const StaticMapper> mapper_;
   ros::Publisher map_pub_;
-  ros::ServiceServer save_srv_;
+  ros::ServiceServer save_srv_, save_octomap_srv_;
+  double voxel_size_m_;  ///< [m] map.voxel_size_m: the OctoMap's leaves
   ros::WallTimer timer_;
   std::mutex mutex_;                                ///< guards the three members below
   std::optional<Eigen::Isometry3d> T_frame_world_;  ///< set by the worker
