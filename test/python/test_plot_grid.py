@@ -12,6 +12,7 @@ import numpy as np
 
 SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts")
 sys.path.insert(0, SCRIPTS)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # nose does not add it
 from test_plot_map import write_pcd  # noqa: E402
 
 GRID_YAML = """image: g.pgm
