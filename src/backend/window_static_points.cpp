@@ -71,9 +71,9 @@ CorrelationInput CollectProblem(const Map& map, const std::vector<int>& keyframe
   return input;
 }
 
-bool LosesMark(PointLabel label, bool unmark_isolated) {
-  return label == PointLabel::kDynamic || (unmark_isolated && label == PointLabel::kIsolated);
-}
+// Points labelled dynamic may lose their marks; isolated points (every edge inconsistent) keep
+// theirs: each is a component of its own, below backend.spd_min_dynamic_points.
+bool LosesMark(PointLabel label) { return label == PointLabel::kDynamic; }
 
 // Per component of `result`: whether its points labelled moving lose their marks. Algorithm 1
 // unmarks every component but the static one; two departures (BENCHMARKS.md, "Issue 32, part 6"):
@@ -93,7 +93,7 @@ std::vector<bool> ComponentsLosingMarks(const StaticPointsResult& result,
   const int static_size = size[result.static_component];
   for (size_t i = 0; i < result.labels.size(); ++i) {
     const int c = result.component[i];
-    if (!LosesMark(result.labels[i], config.spd_unmark_isolated)) continue;
+    if (!LosesMark(result.labels[i])) continue;
     if (size[c] > static_size) return std::vector<bool>(size.size(), false);
     loses[c] = size[c] >= config.spd_min_dynamic_points;
   }
@@ -118,7 +118,7 @@ WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map*
   if (result.static_component >= 0) {
     for (size_t i = 0; i < ids.size(); ++i) {
       if (!loses[result.component[i]]) continue;
-      if (!LosesMark(result.labels[i], config.backend.spd_unmark_isolated)) continue;
+      if (!LosesMark(result.labels[i])) continue;
       MapPoint* point = map->FindWritable(ids[i]);
       if (point == nullptr) continue;  // frozen (a loaded map used for localisation only)
       // It stops driving motion estimation; the front end marks it again only after

@@ -38,6 +38,9 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
      "no measurement changed it; now 0.1 m (odometry_steps.cpp)"},
     {"tracking", "init_min_points_factor",
      "no measurement changed it; now 2 (odometry.cpp)"},
+    {"tracking", "fuse_static_points",
+     "tried, off: BENCHMARKS.md, \"Issue 46, part 4\" (better where nothing moves, worse on "
+     "Bonn crowd 300-599, TUM rpy and walking)"},
     {"tracking", "descriptor_observations",
      "tried, off: BENCHMARKS.md, \"Map point descriptors refined from their observations\""},
     {"tracking", "cull_min_visible",
@@ -49,6 +52,9 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
      "no measurement changed it; now 64 (DescriptorMatchRules)"},
     {"tracking", "relocalisation_ratio",
      "no measurement changed it; now 0.8 (DescriptorMatchRules)"},
+    {"backend", "spd_unmark_isolated",
+     "it changed nothing: an isolated point is a component of one point, below "
+     "spd_min_dynamic_points, so it keeps its mark either way (BENCHMARKS.md, \"Issue 46, part 4\")"},
     {"backend", "spd_enabled",
      "always on with static_points.enabled: local BA alone lost (`git show "
      "0da3eda:BENCHMARKS.md`, \"Back end, part 2\")"},

@@ -59,30 +59,8 @@ bool Odometry::NeedKeyFrame(int static_matches) const {
          static_matches < cfg.keyframe_min_tracked_ratio * last_keyframe_static_;
 }
 
-bool Odometry::DrovePose(const Current& current, size_t m) {
-  return current.pose.inliers[m] && (current.excluded.empty() || !current.excluded[m]);
-}
-
-void Odometry::FuseStaticPoints(const Current& current) {
-  const Eigen::Isometry3d T_world_camera = current.T_camera_world.inverse();
-  for (size_t m = 0; m < current.matches.size(); ++m) {
-    MapPoint* point = map_.FindWritable(current.matches[m].id);  // frozen points stay
-    const auto& measurement = current.features.features[current.matches[m].feature].measurement;
-    if (point == nullptr || !measurement || !point->IsVerifiedStatic()) continue;
-    if (!DrovePose(current, m)) continue;
-    // Information-weighted mean of the map position and this keyframe's measurement.
-    const Eigen::Matrix3d info_map = point->cov_world.inverse();
-    const PointMeasurement in_world = Transformed(*measurement, T_world_camera);
-    const Eigen::Matrix3d info_obs = in_world.covariance.inverse();
-    const Eigen::Matrix3d cov = (info_map + info_obs).inverse();
-    point->p_world = cov * (info_map * point->p_world + info_obs * in_world.y_camera);
-    point->cov_world = cov;
-  }
-}
-
 int Odometry::MakeKeyFrame(const Current& current) {
   const TrackingConfig& cfg = config_.tracking;
-  if (cfg.fuse_static_points) FuseStaticPoints(current);
   const int frame_index = frame_index_ - 1;
   const std::vector<int> dynamic = config_.static_points.enabled
                                        ? DynamicNeighbourhood(current.features, current.matches,

@@ -12,7 +12,6 @@ namespace dslam {
 /// Fields() (printed by `dslam_config_doc`).
 struct BackendConfig {
   bool enabled = false;
-  bool spd_unmark_isolated = false;
   int spd_min_dynamic_points = 10;
   double spd_rotation_sigma_deg = 0.3;
   int ba_fixed_keyframes = 3;
@@ -33,13 +32,6 @@ struct BackendConfig {
     // which then uses the points that stayed marked. Window keyframes sharing fewer than 20
     // measured points with the new keyframe are left out (kMinCovisiblePoints,
     // window_static_points.cpp).
-    // The paper unmarks every point outside the largest-volume component, isolated points (all
-    // their edges inconsistent) included. Off by default: in static scenes these are mostly
-    // points with a bad measurement, not movers (`git show 0da3eda:BENCHMARKS.md`, section
-    // "Back end, part 2": it labels 1.4 % of static_room's points dynamic and costs close_person
-    // and Bonn).
-    v(Flag("spd_unmark_isolated", "points whose tested edges are all inconsistent lose their mark"),
-      s.spd_unmark_isolated);
     // Components this small are cut off by a bad measurement more often than by motion over a
     // window (window_static_points.cpp, ComponentsLosingMarks); the same count as
     // static_points.min_static_points, the smallest component that may be the static world.

@@ -27,7 +27,6 @@ struct TrackingConfig {
   double keyframe_min_tracked_ratio = 0.7;
   int keyframe_min_static = 150;
   int max_new_points = 400;
-  bool fuse_static_points = false;
   double dynamic_neighbour_radius_px = 40.0;
   double cull_min_found_ratio = 0.25;
   int keep_static_frames = 90;
@@ -70,7 +69,7 @@ struct TrackingConfig {
       s.max_keyframes);
     v(Field("search_radius_px", "px", 1.0, 200.0, "projection search radius (octave 0)"),
       s.search_radius_px);
-    // A marked point's map position is where it was created (fuse_static_points off); projected
+    // A marked point's map position is where it was created; projected
     // from its measurement in the last tracked frame instead, more points stay matched where
     // that position has aged (LocalMapSearch::last_frame, local_map_matching.h). On by default:
     // Bonn crowd 300-599 tracks 300 of 300 frames (294 without), mean ATE over seeds 1-5
@@ -117,12 +116,6 @@ struct TrackingConfig {
   template <typename Self, typename Visitor>
   static void PointFields(Self& s, Visitor& v) {
     v(Field("max_new_points", "-", 0, 100000, "map points created per keyframe"), s.max_new_points);
-    // The fusion is an information-weighted mean (the paper refines marked points by bundle
-    // adjustment). Off by default: on Bonn crowd it raised ATE from 0.10 to 0.24 m (people that
-    // stood still, were verified and fused, then walked off), on synthetic walking it gained 3 mm.
-    v(Flag("fuse_static_points",
-           "fuse keyframe measurements of verified static inliers into map positions"),
-      s.fuse_static_points);
     v(Field("dynamic_neighbour_radius_px", "px", 0.0, 1000.0,
             "new points start unmarked when most tracked neighbours within this are dynamic"),
       s.dynamic_neighbour_radius_px);

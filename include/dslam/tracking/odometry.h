@@ -205,9 +205,6 @@ class Odometry {
   /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
   int StaticSeenSinceFrame() const;
   int MakeKeyFrame(const Current& current);
-  /// Whether match `m` was an inlier of the frame's pose and not excluded from it.
-  static bool DrovePose(const Current& current, size_t m);
-  void FuseStaticPoints(const Current& current);
   FrameMeasurements MeasurementsOf(const Current& current,
                                    const std::vector<PointId>& created) const;
   FrameResult Lost(Current* current, FrameResult result, const char* why);
