@@ -38,6 +38,9 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
      "no measurement changed it; now 0.1 m (odometry_steps.cpp)"},
     {"tracking", "init_min_points_factor",
      "no measurement changed it; now 2 (odometry.cpp)"},
+    {"tracking", "front_end_reference",
+     "the keyframes always: previous (the paper's) and both lost on every sequence with people "
+     "(BENCHMARKS.md, \"Issue 50: switches no measurement chose\")"},
     {"tracking", "fuse_static_points",
      "tried, off: BENCHMARKS.md, \"Issue 46, part 4\" (better where nothing moves, worse on "
      "Bonn crowd 300-599, TUM rpy and walking)"},

@@ -104,24 +104,19 @@ bool Odometry::SolvePose(Current* current, const Eigen::Isometry3d& T_camera_wor
 
 std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const {
   const TrackingConfig& cfg = config_.tracking;
+  // Keyframes at least front_end_min_age_frames old (a short baseline hides walking people),
+  // spread evenly from the oldest of the newest keyframes (longest baseline) to the newest
+  // eligible one.
   std::vector<const FrameMeasurements*> frames;
-  if (cfg.front_end_reference != "previous") {
-    // Keyframes at least front_end_min_age_frames old (a short baseline hides walking people),
-    // spread evenly from the oldest of the newest keyframes (longest baseline) to the newest
-    // eligible one.
-    const auto& keyframes = map_.keyframes();
-    const int first = static_cast<int>(map_.first_recent_keyframe());
-    const int now = frame_index_ - 1;
-    int n = static_cast<int>(keyframes.size()) - first;
-    while (n > 1 && now - keyframes[first + n - 1].frame_index < cfg.front_end_min_age_frames) --n;
-    const int k = std::min(n, cfg.front_end_keyframes);
-    for (int i = 0; i < k; ++i) {
-      const int index = first + (k == 1 ? 0 : i * (n - 1) / (k - 1));
-      frames.push_back(&keyframes[index].measurements);
-    }
-  }
-  if (cfg.front_end_reference != "keyframes" && !previous_.by_point.empty()) {
-    frames.push_back(&previous_);
+  const auto& keyframes = map_.keyframes();
+  const int first = static_cast<int>(map_.first_recent_keyframe());
+  const int now = frame_index_ - 1;
+  int n = static_cast<int>(keyframes.size()) - first;
+  while (n > 1 && now - keyframes[first + n - 1].frame_index < cfg.front_end_min_age_frames) --n;
+  const int k = std::min(n, cfg.front_end_keyframes);
+  for (int i = 0; i < k; ++i) {
+    const int index = first + (k == 1 ? 0 : i * (n - 1) / (k - 1));
+    frames.push_back(&keyframes[index].measurements);
   }
   return frames;
 }

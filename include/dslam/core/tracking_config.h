@@ -19,7 +19,6 @@ struct TrackingConfig {
   double wide_search_radius_px = 30.0;
   int min_matches = 40;
   int min_static_inliers = 20;
-  std::string front_end_reference = "keyframes";
   int front_end_keyframes = 6;
   int front_end_min_age_frames = 5;
   int keyframe_max_interval = 10;
@@ -90,11 +89,8 @@ struct TrackingConfig {
   // Front-end reference frames and the keyframe policy.
   template <typename Self, typename Visitor>
   static void FrontEndAndKeyFrameFields(Self& s, Visitor& v) {
-    // keyframes: up to front_end_keyframes keyframes spread over the window; previous: the paper's
-    // choice, the previous frame; both: the keyframes and the previous frame.
-    v(Choice("front_end_reference", {"keyframes", "previous", "both"},
-             "frames the front-end correlations compare with: keyframes, previous (paper) or both"),
-      s.front_end_reference);
+    // The front end compares each frame with keyframes spread over the window (the paper: the
+    // previous frame, which lost: BENCHMARKS.md, "Issue 50: switches no measurement chose").
     v(Field("front_end_keyframes", "-", 1, 100,
             "keyframes spread over the window used by the front end"),
       s.front_end_keyframes);
