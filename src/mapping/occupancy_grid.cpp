@@ -190,31 +190,18 @@ Floor FloorOf(const std::vector<Eigen::Vector3f>& map_points_world, const Eigen:
   return floor;
 }
 
-OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_world,
-                                 const std::vector<GridView>& views,
-                                 const Eigen::Isometry3d& T_world_reference,
-                                 const Eigen::Vector3d& up_world, double cell_size_m,
-                                 const GridConfig& config) {
-  if (!(cell_size_m > 0.0)) throw std::invalid_argument("BuildOccupancyGrid: cell size <= 0");
-  OccupancyGrid grid;
-  grid.cell_size_m = cell_size_m;
-  grid.floor =
-      FloorOf(map_points_world, up_world.normalized(), T_world_reference.translation(), config);
-  const Eigen::Vector3d& up = grid.floor.up_world;
-  // G: origin on the floor below the reference camera.
-  const Eigen::Vector3d c = T_world_reference.translation();
-  grid.T_world_grid.linear() = GridRotation(T_world_reference, up);
-  grid.T_world_grid.translation() = c - (up.dot(c) - grid.floor.height_m) * up;
-  const GridFrame frame{grid.T_world_grid.inverse()};
-  const double z0 = config.min_height_m, z1 = config.max_height_m;
-  grid.min_height_m = z0;
-  grid.max_height_m = z1;
+namespace {
 
-  std::vector<Eigen::Vector3d> obstacles;  // G
+// The map's points in the band (G), and the grid's extent: those points, the cameras and the ends
+// of their rays, with a cell of margin. Throws when it exceeds kMaxCells.
+std::vector<Eigen::Vector3d> SizeGrid(const std::vector<Eigen::Vector3f>& map_points_world,
+                                      const std::vector<GridView>& views, const GridFrame& frame,
+                                      OccupancyGrid* grid) {
+  std::vector<Eigen::Vector3d> obstacles;
   Eigen::AlignedBox2d box;
   for (const Eigen::Vector3f& p : map_points_world) {
     const Eigen::Vector3d g = frame.ToGrid(p.cast<double>());
-    if (g.z() < z0 || g.z() > z1) continue;
+    if (g.z() < grid->min_height_m || g.z() > grid->max_height_m) continue;
     obstacles.push_back(g);
     box.extend(g.head<2>());
   }
@@ -225,43 +212,74 @@ OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_
     }
   }
   if (box.isEmpty()) box.extend(Eigen::Vector2d::Zero());
-  grid.origin_m = (box.min() / cell_size_m).array().floor() * cell_size_m - cell_size_m;
-  const Eigen::Vector2d size = box.max() - grid.origin_m;
-  grid.width = static_cast<int>(std::ceil(size.x() / cell_size_m)) + 1;
-  grid.height = static_cast<int>(std::ceil(size.y() / cell_size_m)) + 1;
-  if (static_cast<double>(grid.width) * grid.height > kMaxCells) {
-    throw std::runtime_error("BuildOccupancyGrid: " + std::to_string(grid.width) + " x " +
-                             std::to_string(grid.height) + " cells exceed the limit " +
+  const double s = grid->cell_size_m;
+  grid->origin_m = (box.min() / s).array().floor() * s - s;
+  const Eigen::Vector2d size = box.max() - grid->origin_m;
+  grid->width = static_cast<int>(std::ceil(size.x() / s)) + 1;
+  grid->height = static_cast<int>(std::ceil(size.y() / s)) + 1;
+  if (static_cast<double>(grid->width) * grid->height > kMaxCells) {
+    throw std::runtime_error("BuildOccupancyGrid: " + std::to_string(grid->width) + " x " +
+                             std::to_string(grid->height) + " cells exceed the limit " +
                              std::to_string(kMaxCells) + " (grid.cell_size_m too small?)");
   }
+  return obstacles;
+}
+
+// Marks free the cells `view`'s rays cross within the band (a floor point's cell too, not the
+// cell of a point in the band: what the ray hit), one trace per distinct pair of cells.
+void ClearAlongRays(const GridView& view, const GridFrame& frame, OccupancyGrid* grid) {
+  const double z0 = grid->min_height_m, z1 = grid->max_height_m;
+  const Eigen::Vector3d camera = frame.ToGrid(view.camera_world);
+  std::unordered_set<uint64_t> traced;  // (start cell, end cell, end included)
+  for (const Eigen::Vector3f& p : view.points_world) {
+    const Eigen::Vector3d end = frame.ToGrid(p.cast<double>());
+    Eigen::Vector3d a = camera, b = end;
+    const bool ends_below = end.z() < z0;  // the floor seen there: its cell is free too
+    const bool ends_in_band = end.z() <= z1 && !ends_below;
+    if (!ClipToBand(&a, &b, z0, z1)) {
+      if (!ends_below) continue;
+      a = end;  // a ray below the band all along: only the floor point's cell
+    }
+    const Eigen::Vector2i from = grid->CellOf(a.head<2>());
+    const Eigen::Vector2d to_xy =
+        ends_below ? Eigen::Vector2d(end.head<2>()) : Eigen::Vector2d(b.head<2>());
+    const Eigen::Vector2i to = grid->CellOf(to_xy);
+    const uint64_t key = (static_cast<uint64_t>(from.x() & 0x7fff) << 49) |
+                         (static_cast<uint64_t>(from.y() & 0x7fff) << 34) |
+                         (static_cast<uint64_t>(to.x() & 0x7fff) << 19) |
+                         (static_cast<uint64_t>(to.y() & 0x7fff) << 4) | (ends_in_band ? 1 : 0);
+    if (!traced.insert(key).second) continue;
+    TraceFree(from, to, !ends_in_band, grid);
+  }
+}
+
+}  // namespace
+
+OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_world,
+                                 const std::vector<GridView>& views,
+                                 const Eigen::Isometry3d& T_world_reference,
+                                 const Eigen::Vector3d& up_world, double cell_size_m,
+                                 const GridConfig& config) {
+  if (!(cell_size_m > 0.0)) throw std::invalid_argument("BuildOccupancyGrid: cell size <= 0");
+  OccupancyGrid grid;
+  grid.cell_size_m = cell_size_m;
+  grid.min_height_m = config.min_height_m;
+  grid.max_height_m = config.max_height_m;
+  grid.floor =
+      FloorOf(map_points_world, up_world.normalized(), T_world_reference.translation(), config);
+  // G: origin on the floor below the reference camera.
+  const Eigen::Vector3d& up = grid.floor.up_world;
+  const Eigen::Vector3d c = T_world_reference.translation();
+  grid.T_world_grid.linear() = GridRotation(T_world_reference, up);
+  grid.T_world_grid.translation() = c - (up.dot(c) - grid.floor.height_m) * up;
+  const GridFrame frame{grid.T_world_grid.inverse()};
+  const std::vector<Eigen::Vector3d> obstacles = SizeGrid(map_points_world, views, frame, &grid);
   grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, kCellUnknown);
   for (const Eigen::Vector3d& g : obstacles) {
     const Eigen::Vector2i cell = grid.CellOf(g.head<2>());
     grid.cells[static_cast<size_t>(cell.y()) * grid.width + cell.x()] = kCellOccupied;
   }
-  for (const GridView& view : views) {
-    const Eigen::Vector3d camera = frame.ToGrid(view.camera_world);
-    // One trace per distinct (start cell, end cell, end included) of this view's rays.
-    std::unordered_set<uint64_t> traced;
-    for (const Eigen::Vector3f& p : view.points_world) {
-      Eigen::Vector3d a = camera, b = frame.ToGrid(p.cast<double>());
-      const bool ends_below = b.z() < z0;  // the floor seen there: its cell is free too
-      const bool ends_in_band = b.z() <= z1 && !ends_below;
-      if (!ClipToBand(&a, &b, z0, z1)) {
-        if (!ends_below) continue;
-        a = b;  // a ray below the band all along: only the floor point's cell
-      }
-      const Eigen::Vector2i from = grid.CellOf(a.head<2>());
-      const Eigen::Vector2i to =
-          grid.CellOf(ends_below ? frame.ToGrid(p.cast<double>()).head<2>() : b.head<2>());
-      const uint64_t key = (static_cast<uint64_t>(from.x() & 0x7fff) << 49) |
-                           (static_cast<uint64_t>(from.y() & 0x7fff) << 34) |
-                           (static_cast<uint64_t>(to.x() & 0x7fff) << 19) |
-                           (static_cast<uint64_t>(to.y() & 0x7fff) << 4) | (ends_in_band ? 1 : 0);
-      if (!traced.insert(key).second) continue;
-      TraceFree(from, to, !ends_in_band, &grid);
-    }
-  }
+  for (const GridView& view : views) ClearAlongRays(view, frame, &grid);
   return grid;
 }
 

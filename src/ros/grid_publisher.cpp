@@ -45,8 +45,7 @@ GridPublisher::~GridPublisher() {
 }
 
 void GridPublisher::SetWorldFrame(const Eigen::Isometry3d& T_frame_world) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  T_frame_world_ = T_frame_world;
+  gate_.SetWorldFrame(T_frame_world);
 }
 
 OccupancyGrid GridPublisher::Build(const Eigen::Isometry3d& T_frame_world) const {
@@ -60,21 +59,11 @@ OccupancyGrid GridPublisher::Build(const Eigen::Isometry3d& T_frame_world) const
 
 void GridPublisher::OnTimer() {
   if (grid_pub_.getNumSubscribers() == 0) return;
-  Eigen::Isometry3d T_frame_world;
-  const uint64_t revision = mapper_->revision();
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (!T_frame_world_ || (published_revision_ == revision &&
-                            published_T_frame_world_.matrix() == T_frame_world_->matrix())) {
-      return;
-    }
-    T_frame_world = *T_frame_world_;
-    published_revision_ = revision;
-    published_T_frame_world_ = T_frame_world;
-  }
+  const std::optional<Eigen::Isometry3d> T_frame_world = gate_.TakeChange(mapper_->revision());
+  if (!T_frame_world) return;
   try {
-    const OccupancyGrid grid = Build(T_frame_world);  // outside this class's lock
-    nav_msgs::OccupancyGrid message = ToMessage(grid, T_frame_world);
+    const OccupancyGrid grid = Build(*T_frame_world);  // outside the gate's lock
+    nav_msgs::OccupancyGrid message = ToMessage(grid, *T_frame_world);
     message.header.stamp = ros::Time::now();
     message.header.frame_id = frame_id_;
     message.info.map_load_time = message.header.stamp;
@@ -90,12 +79,7 @@ void GridPublisher::OnTimer() {
 
 bool GridPublisher::OnSave(dslam::SaveGrid::Request& req, dslam::SaveGrid::Response& res) {
   try {
-    Eigen::Isometry3d T_frame_world = Eigen::Isometry3d::Identity();
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (T_frame_world_) T_frame_world = *T_frame_world_;
-    }
-    const OccupancyGrid grid = Build(T_frame_world);
+    const OccupancyGrid grid = Build(gate_.WorldFrame().value_or(Eigen::Isometry3d::Identity()));
     WriteMapServerFiles(grid, req.path);
     res.occupied_cells = grid.Count(kCellOccupied);
     res.free_cells = grid.Count(kCellFree);

@@ -47,27 +47,15 @@ StaticMapPublisher::~StaticMapPublisher() {
 }
 
 void StaticMapPublisher::SetWorldFrame(const Eigen::Isometry3d& T_frame_world) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  T_frame_world_ = T_frame_world;
+  gate_.SetWorldFrame(T_frame_world);
 }
 
 void StaticMapPublisher::OnTimer() {
   if (map_pub_.getNumSubscribers() == 0) return;
-  Eigen::Isometry3d T_frame_world;
-  const uint64_t revision = mapper_->revision();
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    // In odom_frame (no publish_map_tf) the transform changes with each correction.
-    if (!T_frame_world_ || (published_revision_ == revision &&
-                            published_T_frame_world_.matrix() == T_frame_world_->matrix())) {
-      return;
-    }
-    T_frame_world = *T_frame_world_;
-    published_revision_ = revision;
-    published_T_frame_world_ = T_frame_world;
-  }
-  // The cloud is built outside this class's lock (Cloud takes the mapper's).
-  sensor_msgs::PointCloud2 message = ToMessage(mapper_->Cloud(), T_frame_world);
+  const std::optional<Eigen::Isometry3d> T_frame_world = gate_.TakeChange(mapper_->revision());
+  if (!T_frame_world) return;
+  // The cloud is built outside the gate's lock (Cloud takes the mapper's).
+  sensor_msgs::PointCloud2 message = ToMessage(mapper_->Cloud(), *T_frame_world);
   message.header.stamp = ros::Time::now();
   message.header.frame_id = frame_id_;
   map_pub_.publish(message);

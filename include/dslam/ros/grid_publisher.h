@@ -9,8 +9,9 @@
 // normal of the floor when the map shows one (FloorOf).
 //
 // Threads: the timer and the service run on ROS callback threads, SetWorldFrame on the worker;
-// the transform and what was last published are guarded by this class's mutex, the map by the
-// mapper's own. Neither is held together with Slam's map mutex (Slam calls the mapper without it).
+// the transform and what was last published are guarded by the MapRevisionGate's mutex, the map
+// by the mapper's own. Neither is held together with Slam's map mutex (Slam calls the mapper
+// without it).
 
 #include <cstdint>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "dslam/core/config.h"
 #include "dslam/mapping/occupancy_grid.h"
 #include "dslam/mapping/static_mapper.h"
+#include "dslam/ros/map_revision_gate.h"
 #include "dslam/ros/node_config.h"
 
 namespace dslam {
@@ -64,10 +66,7 @@ class GridPublisher {
   ros::Publisher grid_pub_;
   ros::ServiceServer save_srv_;
   ros::WallTimer timer_;
-  std::mutex mutex_;                                ///< guards the three members below
-  std::optional<Eigen::Isometry3d> T_frame_world_;  ///< set by the worker
-  std::optional<uint64_t> published_revision_;      ///< of the last message sent
-  Eigen::Isometry3d published_T_frame_world_ = Eigen::Isometry3d::Identity();  ///< of the same
+  MapRevisionGate gate_;  ///< the transform and what was last published (own lock)
 };
 
 }  // namespace ros_layer

@@ -8,8 +8,9 @@
 // binary file (octomap_file.h) in the same frame.
 //
 // Threads: the timer and the service run on ROS callback threads, SetWorldFrame on the worker;
-// the transform and what was last published are guarded by this class's mutex, the map by the
-// mapper's own. Neither is held together with Slam's map mutex (Slam calls the mapper without it).
+// the transform and what was last published are guarded by the MapRevisionGate's mutex, the map
+// by the mapper's own. Neither is held together with Slam's map mutex (Slam calls the mapper
+// without it).
 
 #include <cstdint>
 #include <memory>
@@ -21,6 +22,7 @@
 
 #include "dslam/SaveMap.h"
 #include "dslam/mapping/static_mapper.h"
+#include "dslam/ros/map_revision_gate.h"
 #include "dslam/ros/node_config.h"
 
 namespace dslam {
@@ -53,10 +55,7 @@ class StaticMapPublisher {
   ros::ServiceServer save_srv_, save_octomap_srv_;
   double voxel_size_m_;  ///< [m] map.voxel_size_m: the OctoMap's leaves
   ros::WallTimer timer_;
-  std::mutex mutex_;                                ///< guards the three members below
-  std::optional<Eigen::Isometry3d> T_frame_world_;  ///< set by the worker
-  std::optional<uint64_t> published_revision_;      ///< of the last message sent
-  Eigen::Isometry3d published_T_frame_world_ = Eigen::Isometry3d::Identity();  ///< of the same
+  MapRevisionGate gate_;  ///< the transform and what was last published (own lock)
 };
 
 }  // namespace ros_layer
