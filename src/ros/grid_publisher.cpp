@@ -1,6 +1,8 @@
 #include "dslam/ros/grid_publisher.h"
 
-#include <exception>
+#include <string>
+
+#include "dslam/ros/service_reply.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -78,20 +80,15 @@ void GridPublisher::OnTimer() {
 }
 
 bool GridPublisher::OnSave(dslam::SaveGrid::Request& req, dslam::SaveGrid::Response& res) {
-  try {
+  return AnswerWrite(res, [&] {
     const OccupancyGrid grid = Build(gate_.WorldFrame().value_or(Eigen::Isometry3d::Identity()));
     WriteMapServerFiles(grid, req.path);
     res.occupied_cells = grid.Count(kCellOccupied);
     res.free_cells = grid.Count(kCellFree);
-    res.success = true;
-    res.message = "wrote " + std::to_string(grid.width) + " x " + std::to_string(grid.height) +
-                  " cells (" + std::to_string(res.occupied_cells) + " occupied, " +
-                  std::to_string(res.free_cells) + " free) to " + req.path;
-  } catch (const std::exception& e) {
-    res.success = false;
-    res.message = e.what();
-  }
-  return true;
+    return "wrote " + std::to_string(grid.width) + " x " + std::to_string(grid.height) +
+           " cells (" + std::to_string(res.occupied_cells) + " occupied, " +
+           std::to_string(res.free_cells) + " free) to " + req.path;
+  });
 }
 
 }  // namespace ros_layer

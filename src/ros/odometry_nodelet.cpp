@@ -18,6 +18,7 @@
 #include "dslam/ros/keyframe_map_files.h"
 #include "dslam/ros/keyframe_map_outputs.h"
 #include "dslam/ros/param_loader.h"
+#include "dslam/ros/service_reply.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -252,7 +253,7 @@ bool OdometryNodelet::OnSaveRefinedTrajectory(dslam::SaveTrajectory::Request& re
     const std::lock_guard<std::mutex> lock(trajectory_mutex_);
     first_stamp_s = segment_first_stamp_s_;
   }
-  try {
+  return AnswerWrite(res, [&] {
     // The map lock only while RefinedPoses copies its blocks; the file is written after it.
     double lock_held_ms = 0.0;
     const Trajectory segment =
@@ -260,16 +261,11 @@ bool OdometryNodelet::OnSaveRefinedTrajectory(dslam::SaveTrajectory::Request& re
                       : Trajectory();
     WriteTumTrajectory(req.path, segment);
     res.poses = static_cast<int>(segment.size());
-    res.success = true;
     char held[64];
     std::snprintf(held, sizeof(held), " (map lock held %.3f ms)", lock_held_ms);
-    res.message = "wrote " + std::to_string(res.poses) +
-                  " refined poses of the current segment to " + req.path + held;
-  } catch (const std::exception& e) {
-    res.success = false;
-    res.message = e.what();
-  }
-  return true;
+    return "wrote " + std::to_string(res.poses) + " refined poses of the current segment to " +
+           req.path + held;
+  });
 }
 
 }  // namespace ros_layer

@@ -6,6 +6,7 @@
 #include <sensor_msgs/PointCloud2.h>
 
 #include "dslam/mapping/octomap_file.h"
+#include "dslam/ros/service_reply.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -62,32 +63,22 @@ void StaticMapPublisher::OnTimer() {
 }
 
 bool StaticMapPublisher::OnSave(dslam::SaveMap::Request& req, dslam::SaveMap::Response& res) {
-  try {
+  return AnswerWrite(res, [&] {
     const ColouredCloud cloud = mapper_->Cloud();
     WritePcd(req.path, cloud);
     res.points = static_cast<int>(cloud.size());
-    res.success = true;
-    res.message = "wrote " + std::to_string(res.points) + " points to " + req.path;
-  } catch (const std::exception& e) {
-    res.success = false;
-    res.message = e.what();
-  }
-  return true;
+    return "wrote " + std::to_string(res.points) + " points to " + req.path;
+  });
 }
 
 bool StaticMapPublisher::OnSaveOctoMap(dslam::SaveMap::Request& req,
                                        dslam::SaveMap::Response& res) {
-  try {
+  return AnswerWrite(res, [&] {
     const OctoMapStats stats = WriteOctoMap(mapper_->Rays(), voxel_size_m_, req.path);
     res.points = static_cast<int>(stats.occupied_leaves);
-    res.success = true;
-    res.message = "wrote " + std::to_string(stats.occupied_leaves) + " occupied and " +
-                  std::to_string(stats.free_leaves) + " free leaves to " + req.path;
-  } catch (const std::exception& e) {
-    res.success = false;
-    res.message = e.what();
-  }
-  return true;
+    return "wrote " + std::to_string(stats.occupied_leaves) + " occupied and " +
+           std::to_string(stats.free_leaves) + " free leaves to " + req.path;
+  });
 }
 
 }  // namespace ros_layer
