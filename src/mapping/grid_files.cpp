@@ -4,7 +4,6 @@
 #include <cstring>
 #include <fstream>
 #include <iomanip>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +18,7 @@ namespace {
 constexpr unsigned char kPgmOccupied = 0;
 constexpr unsigned char kPgmFree = 254;
 constexpr unsigned char kPgmUnknown = 205;
+constexpr int kMaxPgmSide = 100000;  // [px] a larger side is taken for a broken file
 
 std::string ImagePath(const std::string& yaml_path) {
   const size_t slash = yaml_path.find_last_of('/');
@@ -92,6 +92,7 @@ void WriteMapServerFiles(const OccupancyGrid& grid, const std::string& yaml_path
 namespace {
 
 // The PGM's cells (P5, 8 bits, one comment line at most between the fields).
+// The PGM's size and cells (P5, 8 bits, one comment line at most between the fields).
 void ReadPgm(const std::string& path, OccupancyGrid* grid) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
@@ -102,13 +103,13 @@ void ReadPgm(const std::string& path, OccupancyGrid* grid) {
   if (in.peek() == '#') in.ignore(1 << 20, '\n');
   in >> width >> height >> max_value;
   in.get();
-  if (magic != "P5" || width <= 0 || height <= 0 || max_value != 255) {
+  if (!in || magic != "P5" || width <= 0 || height <= 0 || width > kMaxPgmSide ||
+      height > kMaxPgmSide || max_value != 255) {
     throw std::runtime_error(path + ": not an 8-bit binary PGM");
   }
-  if (width != grid->width || height != grid->height) {
-    throw std::runtime_error(path + ": " + std::to_string(width) + " x " + std::to_string(height) +
-                             " pixels, not the YAML's grid");
-  }
+  grid->width = width;
+  grid->height = height;
+  grid->cells.assign(static_cast<size_t>(width) * height, kCellUnknown);
   std::string row(static_cast<size_t>(width), '\0');
   for (int j = height - 1; j >= 0; --j) {
     if (!in.read(&row[0], width)) throw std::runtime_error(path + ": truncated");
@@ -132,7 +133,9 @@ OccupancyGrid ReadMapServerFiles(const std::string& yaml_path) {
     grid.cell_size_m = yaml["resolution"].as<double>();
     grid.origin_m = {yaml["origin"][0].as<double>(), yaml["origin"][1].as<double>()};
     const std::vector<double> T = yaml["T_world_grid"].as<std::vector<double>>();
-    if (T.size() != 7) throw std::runtime_error("T_world_grid needs 7 numbers");
+    if (T.size() != 7) {
+      throw std::runtime_error(yaml_path + ": not a dslam grid file: T_world_grid needs 7 numbers");
+    }
     grid.T_world_grid.linear() =
         Eigen::Quaterniond(T[6], T[3], T[4], T[5]).normalized().toRotationMatrix();
     grid.T_world_grid.translation() = Eigen::Vector3d(T[0], T[1], T[2]);
@@ -145,22 +148,11 @@ OccupancyGrid ReadMapServerFiles(const std::string& yaml_path) {
   grid.floor.up_world = grid.T_world_grid.linear().col(2);
   grid.floor.height_m = grid.floor.up_world.dot(grid.T_world_grid.translation());
   if (!(grid.cell_size_m > 0.0)) throw std::runtime_error(yaml_path + ": resolution <= 0");
+  if (image.empty()) throw std::runtime_error(yaml_path + ": no image");
   const size_t slash = yaml_path.find_last_of('/');
   const std::string image_path = image.front() == '/' || slash == std::string::npos
                                      ? image
                                      : yaml_path.substr(0, slash + 1) + image;
-  std::ifstream probe(image_path, std::ios::binary);
-  std::string magic;
-  int width = 0, height = 0;
-  probe >> magic >> std::ws;
-  if (probe.peek() == '#') probe.ignore(1 << 20, '\n');
-  probe >> width >> height;
-  if (!probe || width <= 0 || height <= 0 || width > 100000 || height > 100000) {
-    throw std::runtime_error("cannot read the size of " + image_path);
-  }
-  grid.width = width;
-  grid.height = height;
-  grid.cells.assign(static_cast<size_t>(width) * height, kCellUnknown);
   ReadPgm(image_path, &grid);
   return grid;
 }

@@ -158,6 +158,11 @@ std::optional<Plane> LargestPlane(const std::vector<Eigen::Vector3d>& points,
 
 }  // namespace
 
+const char* FloorSource(const Floor& floor) {
+  return floor.from_plane ? "a horizontal plane of the map"
+                          : "grid.floor_height_m below the first camera";
+}
+
 Eigen::Vector2i OccupancyGrid::CellOf(const Eigen::Vector2d& xy_m) const {
   const Eigen::Vector2d c = (xy_m - origin_m) / cell_size_m;
   return {static_cast<int>(std::floor(c.x())), static_cast<int>(std::floor(c.y()))};

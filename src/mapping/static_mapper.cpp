@@ -29,19 +29,15 @@ StaticMapper::StaticMapper(const Config& config)
       tolerance_(FreeSpaceTolerance::From(config.map, config.depth_noise.min_depth_m,
                                           config.depth_noise.max_depth_m)),
       min_depth_m_(config.depth_noise.min_depth_m),
-      max_depth_m_(config.depth_noise.max_depth_m),
+      back_projection_(BackProjection::Of(config.map, config.depth_noise)),
       voxels_(config.map.voxel_size_m),
       max_fused_kept_(static_cast<size_t>(config.tracking.max_keyframes)) {}
 
 StaticMapper::WindowKeyFrame StaticMapper::Prepare(const KeyFrameRecord& keyframe) const {
-  BackProjection options;
-  options.pixel_step = config_.pixel_step;
-  options.min_depth_m = min_depth_m_;
-  options.max_depth_m = max_depth_m_;
-  options.voxel_size_m = config_.voxel_size_m;
   const cv::Mat mask = config_.dynamic_masks ? DynamicPixelMask(keyframe, mask_config_) : cv::Mat();
   return WindowKeyFrame{
-      keyframe.id, keyframe.T_world_camera, BackProjectKeyFrame(keyframe.frame, mask, options),
+      keyframe.id, keyframe.T_world_camera,
+      BackProjectKeyFrame(keyframe.frame, mask, back_projection_),
       DepthView(keyframe.frame, keyframe.T_world_camera, config_.pixel_step, min_depth_m_)};
 }
 
@@ -222,6 +218,14 @@ StaticMapRays StaticMapper::Rays() const {
   for (const WindowKeyFrame& keyframe : window_)
     add_view(keyframe.T_world_camera, keyframe.points_camera);
   return rays;
+}
+
+OccupancyGrid GridOf(const StaticMapRays& rays, const Eigen::Vector3d& up_world,
+                     const Config& config) {
+  const double cell_size_m =
+      config.grid.cell_size_m > 0.0 ? config.grid.cell_size_m : config.map.voxel_size_m;
+  return BuildOccupancyGrid(rays.points_world, rays.views, Eigen::Isometry3d::Identity(), up_world,
+                            cell_size_m, config.grid);
 }
 
 StaticMapStats StaticMapper::stats() const {

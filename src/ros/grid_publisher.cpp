@@ -30,14 +30,10 @@ nav_msgs::OccupancyGrid ToMessage(const OccupancyGrid& grid,
 
 GridPublisher::GridPublisher(ros::NodeHandle& nh, const NodeConfig& node_config,
                              const Config& config, std::shared_ptr<const StaticMapper> mapper)
-    : frame_id_(WorldDataFrameId(node_config)),
-      config_(config.grid),
-      cell_size_m_(config.grid.cell_size_m > 0.0 ? config.grid.cell_size_m
-                                                 : config.map.voxel_size_m),
-      mapper_(std::move(mapper)) {
+    : frame_id_(WorldDataFrameId(node_config)), config_(config), mapper_(std::move(mapper)) {
   grid_pub_ = nh.advertise<nav_msgs::OccupancyGrid>("grid", 1, /*latch=*/true);
   save_srv_ = nh.advertiseService("save_grid", &GridPublisher::OnSave, this);
-  timer_ = nh.createWallTimer(ros::WallDuration(1.0 / config_.rate_hz),
+  timer_ = nh.createWallTimer(ros::WallDuration(1.0 / config_.grid.rate_hz),
                               [this](const ros::WallTimerEvent&) { OnTimer(); });
 }
 
@@ -51,12 +47,9 @@ void GridPublisher::SetWorldFrame(const Eigen::Isometry3d& T_frame_world) {
 }
 
 OccupancyGrid GridPublisher::Build(const Eigen::Isometry3d& T_frame_world) const {
-  const StaticMapRays rays = mapper_->Rays();
-  // The published frame's z axis (the base frame's up) in the tracker's world; the world is the
-  // first frame's optical frame, the grid's reference camera.
+  // The published frame's z axis (the base frame's up) in the tracker's world.
   const Eigen::Vector3d up_world = T_frame_world.rotation().transpose() * Eigen::Vector3d::UnitZ();
-  return BuildOccupancyGrid(rays.points_world, rays.views, Eigen::Isometry3d::Identity(), up_world,
-                            cell_size_m_, config_);
+  return GridOf(mapper_->Rays(), up_world, config_);
 }
 
 void GridPublisher::OnTimer() {
@@ -71,9 +64,7 @@ void GridPublisher::OnTimer() {
     message.info.map_load_time = message.header.stamp;
     grid_pub_.publish(message);
     ROS_INFO_ONCE("dslam: grid %d x %d cells of %.3f m, floor %s", grid.width, grid.height,
-                  grid.cell_size_m,
-                  grid.floor.from_plane ? "a horizontal plane of the map"
-                                        : "grid.floor_height_m below the first camera");
+                  grid.cell_size_m, FloorSource(grid.floor));
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(10.0, "dslam: grid not published: %s", e.what());
   }

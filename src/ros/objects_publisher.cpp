@@ -15,15 +15,12 @@ namespace ros_layer {
 ObjectsPublisher::ObjectsPublisher(ros::NodeHandle& nh, const Config& config, WorkerMode mode)
     : enabled_(config.objects.enabled),
       objects_(config),
+      obstacle_points_(BackProjection::Of(config.map, config.depth_noise)),
       worker_(enabled_ ? mode : WorkerMode::kSynchronous, 2) {
   if (!enabled_) return;
   objects_pub_ = nh.advertise<dslam::MovingObjects>("moving_objects", 5);
   markers_pub_ = nh.advertise<visualization_msgs::MarkerArray>("moving_object_markers", 5);
   obstacles_pub_ = nh.advertise<sensor_msgs::PointCloud2>("obstacles", 5);
-  obstacle_points_.pixel_step = config.map.pixel_step;
-  obstacle_points_.min_depth_m = config.depth_noise.min_depth_m;
-  obstacle_points_.max_depth_m = config.depth_noise.max_depth_m;
-  obstacle_points_.voxel_size_m = config.map.voxel_size_m;
 }
 
 bool ObjectsPublisher::Wanted() const {

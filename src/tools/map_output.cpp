@@ -38,9 +38,17 @@ void MapOutput::Write() {
     if (!masked_path_.empty()) WritePcd(masked_path_, cloud);
     masked_points_ = cloud.size();
   }
-  if (!grid_path_.empty()) WriteGrid();
-  if (!octomap_path_.empty()) {
-    octomap_ = WriteOctoMap(masked_->Rays(), config_.map.voxel_size_m, octomap_path_);
+  if (!grid_path_.empty() || !octomap_path_.empty()) {
+    const StaticMapRays rays = masked_->Rays();
+    if (!grid_path_.empty()) {
+      // Up: grid.up_* in the first frame's optical frame, the trajectory's world.
+      const GridConfig& grid = config_.grid;
+      grid_ = GridOf(rays, Eigen::Vector3d(grid.up_x, grid.up_y, grid.up_z), config_);
+      WriteMapServerFiles(grid_, grid_path_);
+    }
+    if (!octomap_path_.empty()) {
+      octomap_ = WriteOctoMap(rays, config_.map.voxel_size_m, octomap_path_);
+    }
   }
   if (unmasked_) {
     unmasked_->FuseWindow();
@@ -48,18 +56,6 @@ void MapOutput::Write() {
     WritePcd(unmasked_path_, cloud);
     unmasked_points_ = cloud.size();
   }
-}
-
-void MapOutput::WriteGrid() {
-  const GridConfig& config = config_.grid;
-  const StaticMapRays rays = masked_->Rays();
-  const double cell_size_m =
-      config.cell_size_m > 0.0 ? config.cell_size_m : config_.map.voxel_size_m;
-  // The world frame is the first frame's optical frame (the trajectory's).
-  grid_ = BuildOccupancyGrid(rays.points_world, rays.views, Eigen::Isometry3d::Identity(),
-                             Eigen::Vector3d(config.up_x, config.up_y, config.up_z), cell_size_m,
-                             config);
-  WriteMapServerFiles(grid_, grid_path_);
 }
 
 void MapOutput::Print() const {
@@ -71,10 +67,7 @@ void MapOutput::Print() const {
   if (!grid_path_.empty()) {
     std::printf("grid: %d x %d cells of %.3f m, %d occupied, %d free; floor %s -> %s\n",
                 grid_.width, grid_.height, grid_.cell_size_m, grid_.Count(kCellOccupied),
-                grid_.Count(kCellFree),
-                grid_.floor.from_plane ? "a horizontal plane of the map"
-                                       : "grid.floor_height_m below the first camera",
-                grid_path_.c_str());
+                grid_.Count(kCellFree), FloorSource(grid_.floor), grid_path_.c_str());
   }
   if (!masked_path_.empty()) {
     const StaticMapStats stats = masked_->stats();

@@ -45,8 +45,6 @@ class MapOutput {
   void AddTo(JsonObject* json) const;
 
  private:
-  void WriteGrid();
-
   std::string masked_path_, unmasked_path_, grid_path_, octomap_path_;
   Config config_;
   std::shared_ptr<StaticMapper> masked_, unmasked_;

@@ -11,6 +11,8 @@
 #include <opencv2/core.hpp>
 
 #include "dslam/backend/keyframe_observer.h"
+#include "dslam/core/features_config.h"
+#include "dslam/core/map_config.h"
 #include "dslam/core/objects_config.h"
 #include "dslam/core/rgbd_frame.h"
 #include "dslam/mapping/dynamic_mask.h"
@@ -40,6 +42,12 @@ struct BackProjection {
   double min_depth_m = 0.3;    ///< [m] nearer depths are skipped
   double max_depth_m = 4.0;    ///< [m] farther depths are skipped
   double voxel_size_m = 0.05;  ///< [m] voxel grid (PCL VoxelGrid) of the result; 0: none
+
+  /// The static map's sampling: map.pixel_step, the depth noise model's depth range and
+  /// map.voxel_size_m.
+  static BackProjection Of(const MapConfig& map, const DepthNoiseConfig& depth_noise) {
+    return {map.pixel_step, depth_noise.min_depth_m, depth_noise.max_depth_m, map.voxel_size_m};
+  }
 };
 
 /// The pixels of `frame` with a depth in range and `mask` 0 (`mask` CV_8UC1 of the image size,

@@ -35,6 +35,10 @@ struct Floor {
   int plane_points = 0;     ///< map points on that plane (0 without one)
 };
 
+/// Where `floor` came from, for messages: "a horizontal plane of the map" or
+/// "grid.floor_height_m below the first camera".
+const char* FloorSource(const Floor& floor);
+
 /// Cell values, as nav_msgs/OccupancyGrid's data.
 constexpr int8_t kCellUnknown = -1;
 constexpr int8_t kCellFree = 0;

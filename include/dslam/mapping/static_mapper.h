@@ -60,6 +60,12 @@ struct StaticMapRays {
   std::vector<GridView> views;
 };
 
+/// The occupancy grid of `rays` (StaticMapper::Rays) with up `up_world` (world frame) and cells of
+/// config.grid.cell_size_m, or of the map's voxel (map.voxel_size_m) when that is 0. The world is
+/// the tracker's, the first frame's optical frame: the grid's reference camera.
+OccupancyGrid GridOf(const StaticMapRays& rays, const Eigen::Vector3d& up_world,
+                     const Config& config);
+
 /// Fuses Slam's keyframes into a static map (see above).
 class StaticMapper : public KeyFrameObserver {
  public:
@@ -116,9 +122,9 @@ class StaticMapper : public KeyFrameObserver {
   const MapConfig config_;
   const DynamicMaskConfig mask_config_;
   const FreeSpaceTolerance tolerance_;
-  const double min_depth_m_;  ///< [m] depth_noise.min_depth_m
-  const double max_depth_m_;  ///< [m] depth_noise.max_depth_m
-  mutable std::mutex mutex_;  ///< guards everything below
+  const double min_depth_m_;              ///< [m] depth_noise.min_depth_m
+  const BackProjection back_projection_;  ///< how a keyframe's depth is sampled (Of the config)
+  mutable std::mutex mutex_;              ///< guards everything below
   VoxelMap voxels_;
   std::deque<WindowKeyFrame> window_;  ///< oldest first
   std::deque<DepthView> views_;        ///< of the latest fused keyframes, oldest first

@@ -60,8 +60,7 @@ class GridPublisher {
   OccupancyGrid Build(const Eigen::Isometry3d& T_frame_world) const;
 
   std::string frame_id_;  ///< WorldDataFrameId(config)
-  GridConfig config_;
-  double cell_size_m_;
+  Config config_;         ///< grid's band, floor and rate; map.voxel_size_m (GridOf)
   std::shared_ptr<const StaticMapper> mapper_;
   ros::Publisher grid_pub_;
   ros::ServiceServer save_srv_;

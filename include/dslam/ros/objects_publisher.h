@@ -61,7 +61,7 @@ class ObjectsPublisher {
   bool enabled_;
   bool tracking_ = false;  ///< the tracker was handed the previous frame (the caller's)
   MovingObjectTracker objects_;
-  BackProjection obstacle_points_;  ///< map.pixel_step, depth_noise's range, map.voxel_size_m
+  const BackProjection obstacle_points_;  ///< the static map's sampling (BackProjection::Of)
   ros::Publisher objects_pub_, markers_pub_, obstacles_pub_;
   OrderedWorker worker_;  ///< last: its destructor runs the queued frames before the above go
 };
