@@ -1,4 +1,4 @@
-"""scripts/plot_grid: reading a hand-written grid (map_server's YAML with dslam's keys and its
+"""scripts/plot_grid and dslam_tools.grid_files: reading a hand-written grid (map_server's YAML with dslam's keys and its
 PGM), the cells a PCD fills in the grid's band (known points: one in the band, one above it, one
 outside the grid), and the PNG of both."""
 
@@ -13,6 +13,7 @@ import numpy as np
 SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts")
 sys.path.insert(0, SCRIPTS)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # nose does not add it
+from dslam_tools import grid_files  # noqa: E402
 from test_plot_map import write_pcd  # noqa: E402
 
 GRID_YAML = """image: g.pgm
@@ -48,9 +49,11 @@ class PlotGridTest(unittest.TestCase):
                 handle.write(GRID_YAML)
             with open(os.path.join(work, "g.pgm"), "wb") as handle:  # 4 x 3 cells
                 handle.write(b"P5\n# test\n4 3\n255\n" + bytes([0, 254, 205, 254] * 3))
-            cells, keys = plot_grid.read_grid(yaml_path)
+            keys, cells = grid_files.read_grid(yaml_path)
             self.assertEqual(cells.shape, (3, 4))
             self.assertEqual(list(cells[0]), [0, 254, 205, 254])
+            # As the message has them: row j from the lowest y (the PGM's last row), 100 / 0 / -1.
+            self.assertEqual(list(grid_files.cells(cells)[0]), [100, 0, -1, 0])
             # The PCD's points (test_plot_map's): (0, 0, 1) and (1, -0.5, 2) and (-1, 0.5, 3) in
             # the world; in the grid frame z + 0.5: heights 1.5 (band), 2.5 and 3.5 (above).
             pcd = os.path.join(work, "u.pcd")

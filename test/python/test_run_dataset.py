@@ -17,6 +17,7 @@ import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
+from dslam_tools import grid_files  # noqa: E402
 from dslam_tools import trajectory as traj  # noqa: E402
 
 FRAMES = 30
@@ -168,24 +169,13 @@ class RunDatasetCliTest(unittest.TestCase):
         path = os.path.join(self.tmp, "grid.yaml")
         code, summary, _, _ = self.run_tool("grid", "--grid", path)
         self.assertEqual(code, 0)
-        keys = {}
-        with open(path) as handle:
-            for line in handle:
-                if line.strip() and not line.startswith("#"):
-                    key, value = line.split(":", 1)
-                    keys[key.strip()] = value.strip()
+        keys, image = grid_files.read_grid(path)  # read_pgm checks the size against the pixels
         self.assertEqual(keys["image"], "grid.pgm")
         self.assertEqual(float(keys["resolution"]), 0.05)  # map.voxel_size_m's default
         self.assertEqual(len(keys["origin"].strip("[]").split(",")), 3)
         self.assertEqual((keys["negate"], keys["occupied_thresh"], keys["free_thresh"],
                           keys["mode"]), ("0", "0.65", "0.196", "trinary"))
-        with open(os.path.join(self.tmp, "grid.pgm"), "rb") as handle:
-            data = handle.read()
-        fields = data.split(b"\n", 3)  # P5, comment, size, then "255\n" and the pixels
-        self.assertEqual(fields[0], b"P5")
-        width, height = (int(v) for v in fields[2].split())
-        pixels = fields[3][len(b"255\n"):]
-        self.assertEqual(len(pixels), width * height)
+        pixels = image.tobytes()
         self.assertEqual(set(pixels) - {0, 254, 205}, set())
         self.assertEqual(pixels.count(0), summary["grid_occupied_cells"])
         self.assertEqual(pixels.count(254), summary["grid_free_cells"])

@@ -8,6 +8,7 @@ is free, and the cells of the walkers' path
 their pixels are never fused and rays pass where they stood."""
 
 import os
+import sys
 import tempfile
 import unittest
 
@@ -21,6 +22,11 @@ from dslam.srv import SaveGrid, SaveMap
 import test_scenes  # beside this file
 from rostest_helpers import Recorder, play_bag, tum_matrix  # beside this file
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..",
+                                "scripts"))
+from dslam_tools import grid_files  # noqa: E402
+from dslam_tools.grid_files import numbers  # noqa: E402
+
 FRAMES = 90
 # Measured on these frames offline (dslam_run_dataset --grid, the same defaults): 8 of the 89
 # path cells occupied (0.09), 81 free; the bounds leave twice the occupied share.
@@ -28,37 +34,12 @@ PATH_OCCUPIED_MAX = 0.18
 PATH_FREE_MIN = 0.8
 
 
-def read_files(yaml_path):
-    """(keys, cells as in the message: row j from the lowest y, 100 / 0 / -1)."""
-    keys = {}
-    with open(yaml_path) as handle:
-        for line in handle:
-            if line.strip() and not line.startswith("#"):
-                key, value = line.split(":", 1)
-                keys[key.strip()] = value.strip()
-    with open(os.path.join(os.path.dirname(yaml_path), keys["image"]), "rb") as handle:
-        fields = handle.read().split(b"\n", 3)
-    width, height = (int(v) for v in fields[2].split())
-    pixels = np.frombuffer(fields[3][len(b"255\n"):], dtype=np.uint8)[: width * height]
-    image = pixels.reshape(height, width)[::-1]  # the PGM's first row is the highest y
-    cells = np.full(image.shape, -1, dtype=np.int8)
-    cells[image == 0] = 100
-    cells[image == 254] = 0
-    return keys, cells
-
-
-def numbers(text):
-    return [float(v) for v in text.strip("[]").split(",")]
-
-
 def path_cells(folder, keys):
     """The grid cells (i, j) of the walkers' visible centroids (objects.txt, truth world), placed
     in the first frame's optical frame by the first ground-truth pose, then in the grid frame."""
     first = np.loadtxt(os.path.join(folder, "groundtruth.txt"))[0]
     T_world0 = tum_matrix(first)
-    x, y, z, qx, qy, qz, qw = numbers(keys["T_world_grid"])
-    T_world_grid = tum_matrix([0.0, x, y, z, qx, qy, qz, qw])
-    T_grid_truth = np.linalg.inv(T_world_grid) @ np.linalg.inv(T_world0)
+    T_grid_truth = np.linalg.inv(grid_files.world_grid_matrix(keys)) @ np.linalg.inv(T_world0)
     objects = np.loadtxt(os.path.join(folder, "objects.txt"))
     p = np.c_[objects[:, 2:5], np.ones(len(objects))] @ T_grid_truth.T
     s, origin = float(keys["resolution"]), numbers(keys["origin"])
@@ -84,7 +65,8 @@ class GridTest(unittest.TestCase):
         path = os.path.join(tempfile.mkdtemp(prefix="dslam_grid_check_"), "grid.yaml")
         reply = rospy.ServiceProxy("/dslam/save_grid", SaveGrid)(path)
         self.assertTrue(reply.success, reply.message)
-        keys, cells = read_files(path)
+        keys, pixels = grid_files.read_grid(path)
+        cells = grid_files.cells(pixels)
         rospy.loginfo("grid_check: %s", reply.message)
         self.assertEqual(cells.shape, data.shape)
         np.testing.assert_array_equal(cells, data)  # nothing changed since the last frame
