@@ -1,8 +1,67 @@
 #include "dslam/backend/refined_trajectory.h"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <stdexcept>
+#include <type_traits>
+
 #include "dslam/core/keyframe_motion.h"
 
 namespace dslam {
+
+/// Full blocks of frames, block k at byte k * kBlock * sizeof(Frame) of an unnamed temporary file.
+/// Each block is written once; reads (pread) of written blocks and writes (pwrite) of later ones
+/// may run at once, from different threads.
+class RefinedTrajectory::BlockFile {
+ public:
+  /// A new temporary file (std::tmpfile); null when none can be made.
+  static std::shared_ptr<BlockFile> Open() {
+    std::FILE* file = std::tmpfile();
+    return file != nullptr ? std::make_shared<BlockFile>(file) : nullptr;
+  }
+
+  explicit BlockFile(std::FILE* file) : file_(file, &std::fclose) {}
+
+  /// Writes `block` (kBlock frames) as block `index`; false when it could not be written whole.
+  bool Write(size_t index, const std::vector<Frame>& block) {
+    const char* bytes = reinterpret_cast<const char*>(block.data());
+    size_t done = 0;
+    while (done < kBytes) {
+      const ssize_t n = pwrite(fileno(file_.get()), bytes + done, kBytes - done,
+                               static_cast<off_t>(index * kBytes + done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return false;
+      done += static_cast<size_t>(n);
+    }
+    return true;
+  }
+
+  /// Block `index` as Write wrote it. Throws std::runtime_error when it cannot be read.
+  std::vector<Frame> Read(size_t index) const {
+    std::vector<Frame> block(kBlock);
+    char* bytes = reinterpret_cast<char*>(block.data());
+    size_t done = 0;
+    while (done < kBytes) {
+      const ssize_t n = pread(fileno(file_.get()), bytes + done, kBytes - done,
+                              static_cast<off_t>(index * kBytes + done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        throw std::runtime_error("cannot read block " + std::to_string(index) +
+                                 " of the refined trajectory's temporary file");
+      }
+      done += static_cast<size_t>(n);
+    }
+    return block;
+  }
+
+ private:
+  static_assert(std::is_trivially_copyable<Frame>::value, "frames are written as bytes");
+  static constexpr size_t kBytes = kBlock * sizeof(Frame);
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
+};
+
 namespace {
 
 /// Appends `entry` to `open`, moving `open` into `blocks` as a full block at `block` entries.
@@ -48,15 +107,29 @@ RefinedTrajectory::ErasedKeyFrame CompactErased(int id, const Eigen::Isometry3d&
 
 }  // namespace
 
+RefinedTrajectory::RefinedTrajectory() : file_(BlockFile::Open()) {}
+
+RefinedTrajectory::~RefinedTrajectory() = default;
+
 void RefinedTrajectory::AddFrame(double stamp_s, const Eigen::Isometry3d& T_world_camera,
                                  const Map& map) {
   if (map.keyframes().empty()) return;
   const KeyFrame& reference = map.keyframes().back();
   live_[reference.id] = reference.T_world_camera;
   if (live_.size() > live_limit_) RetireErased(map);
-  const Frame frame =
-      Compact(stamp_s, reference.id, reference.T_world_camera.inverse() * T_world_camera);
-  Append(frame, kBlock, &open_frames_, &frame_blocks_);
+  open_frames_.push_back(
+      Compact(stamp_s, reference.id, reference.T_world_camera.inverse() * T_world_camera));
+  if (open_frames_.size() == kBlock) CloseFrameBlock();
+}
+
+void RefinedTrajectory::CloseFrameBlock() {
+  if (file_ != nullptr && frame_blocks_.empty() && file_->Write(filed_blocks_, open_frames_)) {
+    ++filed_blocks_;
+  } else {  // no file, or a write failed: this block and the later ones stay in memory, in order
+    frame_blocks_.push_back(std::make_shared<const std::vector<Frame>>(std::move(open_frames_)));
+  }
+  open_frames_.clear();
+  open_frames_.reserve(kBlock);
 }
 
 void RefinedTrajectory::UpdateKeyFrames(const Map& map) {
@@ -106,6 +179,8 @@ void RefinedTrajectory::RetireErased(const Map& map) {
 
 RefinedTrajectory::Snapshot RefinedTrajectory::Take() const {
   Snapshot snapshot;
+  snapshot.file = file_;
+  snapshot.filed_blocks = filed_blocks_;
   snapshot.frames = frame_blocks_;
   snapshot.frames.push_back(std::make_shared<const std::vector<Frame>>(open_frames_));
   snapshot.erased = erased_;
@@ -125,13 +200,15 @@ Trajectory RefinedTrajectory::Snapshot::Poses() const {
     }
   }
   Trajectory poses;
-  for (const auto& block : frames) {
-    for (const Frame& frame : *block) {
+  const auto add = [&](const std::vector<Frame>& block) {
+    for (const Frame& frame : block) {
       poses.push_back(
           {frame.stamp_s, T_world_keyframe.at(frame.keyframe_id) *
                               Unpack(frame.q_keyframe_camera, frame.t_keyframe_camera)});
     }
-  }
+  };
+  for (size_t k = 0; k < filed_blocks; ++k) add(file->Read(k));
+  for (const auto& block : frames) add(*block);
   return poses;
 }
 

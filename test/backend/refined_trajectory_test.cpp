@@ -61,6 +61,34 @@ TEST(RefinedTrajectory, FramesFollowTheirKeyFramesAndErasedOnesKeepTheirLastPose
   EXPECT_LE(snapshot.live.size(), 2 * map.num_keyframes() + 64);
 }
 
+// Full blocks of frames leave memory for a temporary file; a snapshot reads them even after the
+// trajectory that wrote them is gone, and keeps its own frames while more are written.
+TEST(RefinedTrajectory, FullBlocksGoToATemporaryFileThatSnapshotsKeep) {
+  Map map;
+  map.AddKeyFrame(KeyFrameAt(0, 0.0), KeyFrameMapLimits::Newest(3));
+  RefinedTrajectory::Snapshot early, late;
+  const size_t frames = 3 * RefinedTrajectory::kBlock + 7;
+  {
+    RefinedTrajectory refined;
+    for (size_t i = 0; i < frames; ++i) {
+      refined.AddFrame(0.1 * i, PoseNear(0.001 * i, 0.0), map);
+      if (i + 1 == RefinedTrajectory::kBlock + 3) early = refined.Take();
+    }
+    ASSERT_TRUE(refined.FramesFiled());
+    late = refined.Take();
+    EXPECT_EQ(late.filed_blocks, 3u);
+    EXPECT_EQ(late.frames.size(), 1u);  // only the open block in memory
+  }
+  const Trajectory early_poses = early.Poses(), late_poses = late.Poses();
+  ASSERT_EQ(early_poses.size(), RefinedTrajectory::kBlock + 3);
+  ASSERT_EQ(late_poses.size(), frames);
+  for (size_t i = 0; i < frames; i += 101) {
+    EXPECT_DOUBLE_EQ(late_poses[i].stamp_s, 0.1 * i);
+    EXPECT_NEAR(late_poses[i].T_world_camera.translation().x(), 0.001 * i, 1e-6) << i;
+    if (i < early_poses.size()) EXPECT_DOUBLE_EQ(early_poses[i].stamp_s, 0.1 * i);
+  }
+}
+
 // A loop correction moves the keyframes in the map by 1, 2 and 3 m: the frames anchored on
 // keyframes erased before it move with the nearest keyframe the correction moved (here the oldest
 // in the map, none being older), the others with their own; a snapshot taken before keeps the old

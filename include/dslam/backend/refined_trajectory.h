@@ -10,11 +10,14 @@
 //
 // Memory and copies over hours: a frame costs 40 bytes, a keyframe erased from the map 64
 // (T_keyframe_camera in single precision: below 1e-7 m and 1e-7 rad for keyframe offsets under a
-// metre, under the 1e-6 m the trajectory files print). Frames and the poses of keyframes erased
-// from the map are kept in full blocks that only a loop correction writes again and that are
-// shared by snapshots, so Take() copies a few pointers, the open block and the poses of the
-// keyframes still in the map, whatever the run's length: Slam takes it under its map lock and
-// computes the poses after releasing it.
+// metre, under the 1e-6 m the trajectory files print). Full blocks of frames never change: they
+// go to an unnamed temporary file (std::tmpfile, under $TMPDIR or /tmp, gone when the process
+// ends), so memory holds one open block of frames whatever the run's length (4.3 MB an hour at
+// 30 Hz otherwise); where no such file can be made or written, the blocks stay in memory. The
+// poses of keyframes erased from the map are kept in full blocks in memory (a loop correction
+// writes them again). Snapshots share both, so Take() copies a few pointers, the open blocks and
+// the poses of the keyframes still in the map: Slam takes it under its map lock and computes the
+// poses, reading the file, after releasing it.
 
 #include <cstdint>
 #include <memory>
@@ -47,15 +50,26 @@ class RefinedTrajectory {
     double q_world_keyframe[4];
     double t_world_keyframe[3];
   };
+  class BlockFile;  ///< full blocks of frames in a temporary file (refined_trajectory.cpp)
+
   /// What Poses needs, copied cheaply (top of this file).
   struct Snapshot {
-    std::vector<std::shared_ptr<const std::vector<Frame>>> frames;  ///< full blocks, then the open
+    std::shared_ptr<const BlockFile> file;  ///< the first `filed_blocks` blocks (null: none)
+    size_t filed_blocks = 0;
+    /// Full blocks after the filed ones (kept in memory), then the open block.
+    std::vector<std::shared_ptr<const std::vector<Frame>>> frames;
     /// Keyframes erased from the map, at their last pose (full blocks, then the open one).
     std::vector<std::shared_ptr<const std::vector<ErasedKeyFrame>>> erased;
     std::unordered_map<int, Eigen::Isometry3d> live;  ///< keyframes in the map [m]
     /// The frames with their refined poses, in the order they were added.
     Trajectory Poses() const;
   };
+
+  /// Blocks of frames go to a temporary file when one can be made (top of this file).
+  RefinedTrajectory();
+  ~RefinedTrajectory();
+  RefinedTrajectory(const RefinedTrajectory&) = delete;
+  RefinedTrajectory& operator=(const RefinedTrajectory&) = delete;
 
   /// Records a tracked frame at `stamp_s` [s] with pose T_world_camera [m], anchored on the
   /// newest keyframe of `map` (the frame's own keyframe when it became one). Ignored when the map
@@ -77,7 +91,12 @@ class RefinedTrajectory {
   /// Take().Poses().
   Trajectory Poses() const { return Take().Poses(); }
   /// [-] frames recorded.
-  size_t size() const { return frame_blocks_.size() * kBlock + open_frames_.size(); }
+  size_t size() const {
+    return (filed_blocks_ + frame_blocks_.size()) * kBlock + open_frames_.size();
+  }
+  /// Whether full blocks of frames go to the temporary file (false: none could be made, or a
+  /// write failed and the later blocks stay in memory).
+  bool FramesFiled() const { return file_ != nullptr && frame_blocks_.empty(); }
 
   static constexpr size_t kBlock = 4096;  ///< entries per full block
 
@@ -85,6 +104,12 @@ class RefinedTrajectory {
   /// Moves keyframes of live_ that `map` no longer has to the erased blocks.
   void RetireErased(const Map& map);
 
+  /// Moves the full open block of frames to the file, or to frame_blocks_.
+  void CloseFrameBlock();
+
+  std::shared_ptr<BlockFile> file_;  ///< null: blocks stay in memory
+  /// Full blocks in file_; the later ones in frame_blocks_ (after a failed write).
+  size_t filed_blocks_ = 0;
   std::vector<std::shared_ptr<const std::vector<Frame>>> frame_blocks_;  ///< each kBlock frames
   std::vector<Frame> open_frames_;
   std::vector<std::shared_ptr<const std::vector<ErasedKeyFrame>>> erased_;
