@@ -92,8 +92,11 @@ if(NOT DSLAM_JEMALLOC_LIBRARY)
 endif()
 set(DSLAM_NODE_ALLOCATOR)
 if(NOT DSLAM_SANITIZE)
+  # --export-dynamic-symbol: jemalloc finds the executable's malloc_conf (its options) only in
+  # the dynamic symbol table.
   set(DSLAM_NODE_ALLOCATOR
-    -Wl,--push-state,--no-as-needed ${DSLAM_JEMALLOC_LIBRARY} -Wl,--pop-state)
+    -Wl,--push-state,--no-as-needed ${DSLAM_JEMALLOC_LIBRARY} -Wl,--pop-state
+    -Wl,--export-dynamic-symbol=malloc_conf)
 endif()
 
 function(dslam_sanitize target)

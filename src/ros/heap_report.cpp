@@ -35,10 +35,15 @@ std::string JemallocReport(Mallctl mallctl) {
   if (allocated < 0.0 || active < 0.0 || resident < 0.0) {
     return "heap (jemalloc): statistics not available";
   }
-  char text[160];
+  bool background_thread = false;  // purges freed pages on time (malloc_conf, MALLOC_CONF)
+  size = sizeof(background_thread);
+  const bool known = mallctl("background_thread", &background_thread, &size, nullptr, 0) == 0;
+  char text[200];
   std::snprintf(text, sizeof(text),
-                "heap (jemalloc): %.1f MB allocated, %.1f MB in active pages, %.1f MB resident",
-                allocated * kMb, active * kMb, resident * kMb);
+                "heap (jemalloc): %.1f MB allocated, %.1f MB in active pages, %.1f MB resident, "
+                "background thread %s",
+                allocated * kMb, active * kMb, resident * kMb,
+                known ? (background_thread ? "on" : "off") : "unknown");
   return text;
 }
 
