@@ -9,6 +9,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "dslam/mapping/view_votes.h"
+
 namespace dslam {
 namespace {
 
@@ -20,6 +22,7 @@ constexpr double kMaxTiltDeg = 30.0;     // the floor's normal within this of th
 constexpr int kPlaneIterations = 300;
 constexpr unsigned kPlaneSeed = 20261205u;
 constexpr int kMaxCells = 4000 * 4000;  // a grid larger than this is refused (memory)
+constexpr double kViewBinRad = 0.025;    // [rad] direction bins of the views' votes (about 1.4 deg)
 
 // The rotation of G in the world frame: z = up, x = the reference camera's optical axis on the
 // floor (any horizontal axis when the camera looks straight up or down).
@@ -230,6 +233,31 @@ std::vector<Eigen::Vector3d> SizeGrid(const std::vector<Eigen::Vector3f>& map_po
   return obstacles;
 }
 
+// The points of `map_points_world` in the grid's band that a view measured and that the views
+// do not see through (FreeSpaceTolerance::Transient of their votes, VoteByViews): a moving
+// object's point that entered the map stays out of the grid when views, before or after, saw
+// past it as often as they hit it; a point no view measured within the depth noise (a depth
+// outlier behind a wall, whose own view's nearest range in that direction is the wall's) too.
+std::vector<Eigen::Vector3f> SeenByViews(const std::vector<Eigen::Vector3f>& map_points_world,
+                                         const std::vector<GridView>& views,
+                                         const GridFrame& frame, const OccupancyGrid& grid,
+                                         const ViewVoteTolerance& tolerance) {
+  std::vector<Eigen::Vector3f> in_band;
+  for (const Eigen::Vector3f& p : map_points_world) {
+    const double z = frame.ToGrid(p.cast<double>()).z();
+    if (z >= grid.min_height_m && z <= grid.max_height_m) in_band.push_back(p);
+  }
+  const std::vector<RayVotes> votes = VoteByViews(in_band, views, tolerance, kViewBinRad);
+  std::vector<Eigen::Vector3f> kept;
+  for (size_t k = 0; k < in_band.size(); ++k) {
+    const RayVotes& v = votes[k];
+    if (v.measured >= 1 && !tolerance.see_through.Transient(v.misses, v.hits)) {
+      kept.push_back(in_band[k]);
+    }
+  }
+  return kept;
+}
+
 // Marks free the cells `view`'s rays cross within the band (a floor point's cell too, not the
 // cell of a point in the band: what the ray hit), one trace per distinct pair of cells.
 void ClearAlongRays(const GridView& view, const GridFrame& frame, OccupancyGrid* grid) {
@@ -264,7 +292,7 @@ OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_
                                  const std::vector<GridView>& views,
                                  const Eigen::Isometry3d& T_world_reference,
                                  const Eigen::Vector3d& up_world, double cell_size_m,
-                                 const GridConfig& config) {
+                                 const GridConfig& config, const ViewVoteTolerance& votes) {
   if (!(cell_size_m > 0.0)) throw std::invalid_argument("BuildOccupancyGrid: cell size <= 0");
   OccupancyGrid grid;
   grid.cell_size_m = cell_size_m;
@@ -278,7 +306,8 @@ OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_
   grid.T_world_grid.linear() = GridRotation(T_world_reference, up);
   grid.T_world_grid.translation() = c - (up.dot(c) - grid.floor.height_m) * up;
   const GridFrame frame{grid.T_world_grid.inverse()};
-  const std::vector<Eigen::Vector3d> obstacles = SizeGrid(map_points_world, views, frame, &grid);
+  const std::vector<Eigen::Vector3d> obstacles =
+      SizeGrid(SeenByViews(map_points_world, views, frame, grid, votes), views, frame, &grid);
   grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, kCellUnknown);
   for (const Eigen::Vector3d& g : obstacles) {
     const Eigen::Vector2i cell = grid.CellOf(g.head<2>());

@@ -6,6 +6,7 @@
 
 #include "dslam/core/keyframe_motion.h"
 #include "dslam/mapping/coloured_cloud.h"
+#include "dslam/mapping/view_votes.h"
 
 namespace dslam {
 namespace {
@@ -225,7 +226,7 @@ OccupancyGrid GridOf(const StaticMapRays& rays, const Eigen::Vector3d& up_world,
   const double cell_size_m =
       config.grid.cell_size_m > 0.0 ? config.grid.cell_size_m : config.map.voxel_size_m;
   return BuildOccupancyGrid(rays.points_world, rays.views, Eigen::Isometry3d::Identity(), up_world,
-                            cell_size_m, config.grid);
+                            cell_size_m, config.grid, ViewVoteTolerance::From(config));
 }
 
 StaticMapStats StaticMapper::stats() const {

@@ -16,6 +16,7 @@
 #include "dslam/core/config.h"
 #include "dslam/mapping/occupancy_grid.h"
 #include "dslam/mapping/octomap_file.h"
+#include "dslam/mapping/view_votes.h"
 
 namespace dslam {
 namespace {
@@ -60,6 +61,9 @@ GridView ViewOf(const Eigen::Isometry3d& T_world_camera,
 
 GridConfig Defaults() { return Config().grid; }
 
+// The default vote tolerances (misses: 5 cm + 2 % of the range; hits: 2.5 cm + 2 sigma_d).
+ViewVoteTolerance SeeThrough() { return ViewVoteTolerance::From(Config()); }
+
 // The value of the cell holding the world point (x, y) of a grid whose G is the world's x, y.
 int8_t CellAt(const OccupancyGrid& grid, double x, double y) {
   const Eigen::Vector3d g = grid.T_world_grid.inverse() * Eigen::Vector3d(x, y, 0.0);
@@ -100,7 +104,7 @@ TEST(OccupancyGrid, WallAndBoxOccupiedFloorFreeBehindUnknown) {
     if (std::abs(p.y()) < 1.5) seen.push_back(p);
   }
   const OccupancyGrid grid = BuildOccupancyGrid(room, {ViewOf(camera, seen)}, camera,
-                                                -camera.linear().col(1), 0.05, Defaults());
+                                                -camera.linear().col(1), 0.05, Defaults(), SeeThrough());
   ASSERT_TRUE(grid.floor.from_plane);
   EXPECT_EQ(CellAt(grid, 4.025, 0.0), kCellOccupied);  // the wall
   EXPECT_EQ(CellAt(grid, 2.2, 0.0), kCellOccupied);    // the box
@@ -119,16 +123,41 @@ TEST(OccupancyGrid, RaysThroughWhereAPersonStoodLeaveNoObstacle) {
   const std::vector<Eigen::Vector3f> room = Room();
   const Eigen::Isometry3d camera = Camera();
   const OccupancyGrid grid = BuildOccupancyGrid(room, {ViewOf(camera, room)}, camera,
-                                                -camera.linear().col(1), 0.05, Defaults());
+                                                -camera.linear().col(1), 0.05, Defaults(), SeeThrough());
   EXPECT_EQ(CellAt(grid, 1.5, -0.5), kCellFree);
   EXPECT_EQ(CellAt(grid, 3.0, 0.6), kCellFree);
+}
+
+TEST(OccupancyGrid, APersonsPointsInTheMapThatAnotherViewSawThroughLeaveNoObstacle) {
+  // A person (a column 0.3 m wide at x 1.5, y -0.5, 0.2-1.7 m high) entered the map from the
+  // view that measured it; a view from the same place before the person came saw the wall through
+  // it. The person's cells are no obstacle; the box, which both measured, stays one.
+  const std::vector<Eigen::Vector3f> room = Room();
+  const Eigen::Isometry3d camera = Camera();
+  std::vector<Eigen::Vector3f> person;
+  for (double y = -0.65; y < -0.35; y += 0.02) {
+    for (double z = 0.2; z < 1.7; z += 0.02) person.emplace_back(1.5, y, z);
+  }
+  std::vector<Eigen::Vector3f> map = room, with_person = room;
+  map.insert(map.end(), person.begin(), person.end());
+  with_person.insert(with_person.end(), person.begin(), person.end());
+  const OccupancyGrid only_its_view =
+      BuildOccupancyGrid(map, {ViewOf(camera, with_person)}, camera, -camera.linear().col(1), 0.05,
+                         Defaults(), SeeThrough());
+  EXPECT_EQ(CellAt(only_its_view, 1.5, -0.5), kCellOccupied);  // nothing saw through it
+  const OccupancyGrid grid = BuildOccupancyGrid(
+      map, {ViewOf(camera, room), ViewOf(camera, with_person)}, camera, -camera.linear().col(1),
+      0.05, Defaults(), SeeThrough());
+  for (double y = -0.6; y < -0.35; y += 0.05) EXPECT_EQ(CellAt(grid, 1.5, y), kCellFree) << y;
+  EXPECT_EQ(CellAt(grid, 2.2, 0.0), kCellOccupied);  // the box
+  EXPECT_EQ(CellAt(grid, 4.025, 0.0), kCellOccupied);  // the wall
 }
 
 TEST(OccupancyGrid, MapServerFilesReadBack) {
   const std::vector<Eigen::Vector3f> room = Room();
   const Eigen::Isometry3d camera = Camera();
   const OccupancyGrid grid = BuildOccupancyGrid(room, {ViewOf(camera, room)}, camera,
-                                                -camera.linear().col(1), 0.1, Defaults());
+                                                -camera.linear().col(1), 0.1, Defaults(), SeeThrough());
   const std::string yaml_path = ::testing::TempDir() + "/dslam_grid_test.yaml";
   WriteMapServerFiles(grid, yaml_path);
   const YAML::Node yaml = YAML::LoadFile(yaml_path);

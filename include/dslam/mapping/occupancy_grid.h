@@ -21,6 +21,8 @@
 
 namespace dslam {
 
+struct ViewVoteTolerance;  // dslam/mapping/view_votes.h
+
 /// What one keyframe saw: its camera centre and its static points (the ends of its rays).
 struct GridView {
   Eigen::Vector3d camera_world = Eigen::Vector3d::Zero();  ///< [m] world frame
@@ -78,13 +80,15 @@ Floor FloorOf(const std::vector<Eigen::Vector3f>& map_points_world, const Eigen:
 
 /// The grid of `map_points_world` (the static map, world frame) and `views` (rays), with G
 /// defined by `T_world_reference` (the first keyframe's camera pose) and the floor's up
-/// (FloorOf from `up_world`).
+/// (FloorOf from `up_world`). A map point in the band is an obstacle when at least one view
+/// measured it (within the depth noise) and the views do not see through it as often as they
+/// hit it (VoteByViews with `votes`; every view votes, those before the point was fused too).
 /// `cell_size_m` > 0. Occupied wins over free in a cell.
 OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_world,
                                  const std::vector<GridView>& views,
                                  const Eigen::Isometry3d& T_world_reference,
                                  const Eigen::Vector3d& up_world, double cell_size_m,
-                                 const GridConfig& config);
+                                 const GridConfig& config, const ViewVoteTolerance& votes);
 
 /// Writes `grid` as the pair ROS's map_server reads: `yaml_path` (image, resolution, origin
 /// [x, y, yaw] of cell (0, 0) in G, negate 0, occupied_thresh 0.65, free_thresh 0.196, mode
