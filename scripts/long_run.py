@@ -16,7 +16,8 @@ end it checks:
 Exit status 0 when all hold, 1 otherwise, 2 when the run itself failed.
 
   scripts/long_run.py [--minutes 10] [--seed 1] [--rate 30] [--out build/long_run]
-                      [--param KEY=VALUE ...] [--node-wrapper 'heaptrack -o FILE']
+                      [--param KEY=VALUE ...] [--subscribe TOPIC ...]
+                      [--node-wrapper 'heaptrack -o FILE']
 Needs the built workspace (DSLAM_WS or build/ws; targets dslam_ros, dslam_odometry_node_main,
 dslam_replay_main, dslam_synth_main, dslam_generate_messages_py).
 """
@@ -321,6 +322,10 @@ def run(args, env):
         status = StatusMonitor()
         rospy.Subscriber("/dslam/status", FrameStatus, status, queue_size=1000,
                          tcp_nodelay=True)
+        received = {topic: 0 for topic in args.subscribe}
+        for topic in args.subscribe:  # held for the whole run, as a planner or rviz would
+            rospy.Subscriber(topic, rospy.AnyMsg, lambda _, t=topic: received.update(
+                {t: received[t] + 1}), queue_size=1)
         replay = procs.start("replay", [
             os.path.join(BIN, "dslam_replay"), "--dataset", folder, "--rate", str(args.rate),
             "--duration", str(60.0 * args.minutes), "--wait-subscribers", "60", "__ns:=/camera"])
@@ -333,6 +338,8 @@ def run(args, env):
     finally:
         procs.stop_all()
     results = check(rows, final, published)
+    for topic, count in sorted(received.items()):
+        print("received %d messages on %s" % (count, topic))
     print("\nnode at the end: VmRSS %.1f MB, VmHWM %.1f MB; logs in %s" % (node_rss, node_hwm,
                                                                           args.log_dir))
     for ok, text in results:
@@ -353,6 +360,9 @@ def main():
                         help="node parameter (below ~), after config/default.yaml and "
                              "config/ros/node.yaml; backend/enabled=true and exact_sync=true "
                              "are set first")
+    parser.add_argument("--subscribe", action="append", default=[], metavar="TOPIC",
+                        help="holds a subscriber on TOPIC for the whole run (e.g. /dslam/grid: "
+                             "the node then rebuilds the grid and logs its times once a minute)")
     parser.add_argument("--node-wrapper", default="", metavar="COMMAND",
                         help="runs the node under COMMAND, e.g. 'heaptrack -o FILE' (memory and "
                              "CPU are then those of the node process below it)")

@@ -1,5 +1,7 @@
 #include "dslam/ros/grid_publisher.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "dslam/ros/service_reply.h"
@@ -57,7 +59,9 @@ void GridPublisher::OnTimer() {
   const std::optional<Eigen::Isometry3d> T_frame_world = gate_.TakeChange(mapper_->revision());
   if (!T_frame_world) return;
   try {
+    const ros::WallTime start = ros::WallTime::now();
     const OccupancyGrid grid = Build(*T_frame_world);  // outside the gate's lock
+    CountRebuild((ros::WallTime::now() - start).toSec() * 1e3, grid);
     nav_msgs::OccupancyGrid message = ToMessage(grid, *T_frame_world);
     message.header.stamp = ros::Time::now();
     message.header.frame_id = frame_id_;
@@ -68,6 +72,21 @@ void GridPublisher::OnTimer() {
   } catch (const std::exception& e) {
     ROS_ERROR_THROTTLE(10.0, "dslam: grid not published: %s", e.what());
   }
+}
+
+void GridPublisher::CountRebuild(double ms, const OccupancyGrid& grid) {
+  const ros::WallTime now = ros::WallTime::now();
+  if (rebuilds_.since.isZero()) rebuilds_.since = now;
+  ++rebuilds_.count;
+  rebuilds_.total_ms += ms;
+  rebuilds_.longest_ms = std::max(rebuilds_.longest_ms, ms);
+  if ((now - rebuilds_.since).toSec() < 60.0) return;
+  ROS_INFO("dslam: grid rebuilt %d times in the last minute, mean %.1f ms, longest %.1f ms "
+           "(%d x %d cells, %d occupied)",
+           rebuilds_.count, rebuilds_.total_ms / rebuilds_.count, rebuilds_.longest_ms, grid.width,
+           grid.height, grid.Count(kCellOccupied));
+  rebuilds_ = RebuildTimes();
+  rebuilds_.since = now;
 }
 
 bool GridPublisher::OnSave(dslam::SaveGrid::Request& req, dslam::SaveGrid::Response& res) {

@@ -66,6 +66,16 @@ class GridPublisher {
   ros::ServiceServer save_srv_;
   ros::WallTimer timer_;
   MapRevisionGate gate_;  ///< the transform and what was last published (own lock)
+  /// Rebuilds since the last minute's log line: count, summed and longest time [ms] (the timer's
+  /// thread only).
+  struct RebuildTimes {
+    int count = 0;
+    double total_ms = 0.0;
+    double longest_ms = 0.0;
+    ros::WallTime since;
+  } rebuilds_;
+  /// Adds a rebuild of `ms` and logs the minute's count, mean and longest once a minute.
+  void CountRebuild(double ms, const OccupancyGrid& grid);
 };
 
 }  // namespace ros_layer
