@@ -56,12 +56,15 @@ OccupancyGrid GridPublisher::Build(const Eigen::Isometry3d& T_frame_world) const
 
 void GridPublisher::OnTimer() {
   if (grid_pub_.getNumSubscribers() == 0) return;
+  if (ros::WallTime::now() < next_rebuild_) return;
   const std::optional<Eigen::Isometry3d> T_frame_world = gate_.TakeChange(mapper_->revision());
   if (!T_frame_world) return;
   try {
     const ros::WallTime start = ros::WallTime::now();
     const OccupancyGrid grid = Build(*T_frame_world);  // outside the gate's lock
-    CountRebuild((ros::WallTime::now() - start).toSec() * 1e3, grid);
+    const ros::WallTime end = ros::WallTime::now();
+    CountRebuild((end - start).toSec() * 1e3, grid);
+    next_rebuild_ = end + ros::WallDuration((end - start).toSec() * kIdlePerBuild);
     nav_msgs::OccupancyGrid message = ToMessage(grid, *T_frame_world);
     message.header.stamp = ros::Time::now();
     message.header.frame_id = frame_id_;

@@ -45,6 +45,7 @@ struct GridConfig {
       s.up_y);
     v(Field("up_z", "-", -1.0, 1.0, "z of the up vector in the first camera's optical frame"),
       s.up_z);
+    // The node also waits 9 times the last rebuild's time before the next (GridPublisher).
     v(Field("rate_hz", "Hz", 0.01, 100.0, "the node rebuilds the grid at most this often"),
       s.rate_hz);
   }

@@ -3,7 +3,8 @@
 // StaticMapper's points and rays): nav_msgs/OccupancyGrid `grid` (latched, in the frame of the
 // tracker's world data: WorldDataFrameId, map_frame or odom_frame; its origin pose places the
 // grid frame, z up, in that frame), rebuilt by a wall-clock timer at grid.rate_hz, only while
-// subscribed and only when the map or its transform changed; and the service `save_grid`
+// subscribed, only when the map or its transform changed, and with 9 times the last rebuild's
+// time between rebuilds (at most 10 % of a core); and the service `save_grid`
 // (dslam/SaveGrid) writing map_server's YAML and PGM pair. Up is the published frame's z axis
 // (the base frame's, REP 103: the camera mount from TF or the default mount), replaced by the
 // normal of the floor when the map shows one (FloorOf).
@@ -66,6 +67,11 @@ class GridPublisher {
   ros::ServiceServer save_srv_;
   ros::WallTimer timer_;
   MapRevisionGate gate_;  ///< the transform and what was last published (own lock)
+  /// The timer rebuilds no earlier than this: after a rebuild of t seconds, kIdlePerBuild t later,
+  /// so that the grid takes at most 1 / (1 + kIdlePerBuild) of a core (10 %) whatever the map's
+  /// size; a grid of the long run's full map (300 keyframes) takes about 0.5 s to build.
+  static constexpr double kIdlePerBuild = 9.0;
+  ros::WallTime next_rebuild_;
   /// Rebuilds since the last minute's log line: count, summed and longest time [ms] (the timer's
   /// thread only).
   struct RebuildTimes {
