@@ -123,7 +123,7 @@ void RefinedTrajectory::AddFrame(double stamp_s, const Eigen::Isometry3d& T_worl
 }
 
 void RefinedTrajectory::CloseFrameBlock() {
-  if (file_ != nullptr && frame_blocks_.empty() && file_->Write(filed_blocks_, open_frames_)) {
+  if (FramesFiled() && file_->Write(filed_blocks_, open_frames_)) {
     ++filed_blocks_;
   } else {  // no file, or a write failed: this block and the later ones stay in memory, in order
     frame_blocks_.push_back(std::make_shared<const std::vector<Frame>>(std::move(open_frames_)));

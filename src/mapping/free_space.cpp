@@ -71,7 +71,7 @@ Visibility DepthView::Vote(const Eigen::Vector3f& p_world,
 Visibility DepthView::VoteInView(const Eigen::Vector3f& p,
                                  const FreeSpaceTolerance& tolerance) const {
   const double z = p.z();
-  if (!(z >= tolerance.min_depth_m && z <= tolerance.max_depth_m)) return Visibility::kNoVote;
+  if (!tolerance.InRange(z)) return Visibility::kNoVote;
   const PinholeCamera& camera = *camera_;
   // PinholeCamera::Project, inline (the same arithmetic): this runs for many points per frame.
   Eigen::Vector2d uv(camera.fx() * p.x() / z + camera.cx(), camera.fy() * p.y() / z + camera.cy());
@@ -93,7 +93,7 @@ Visibility DepthView::VoteInView(const Eigen::Vector3f& p,
   if (bu < 0 || bv < 0 || bu >= near_m_.cols || bv >= near_m_.rows) return Visibility::kNoVote;
   const float near = near_m_.at<float>(bv, bu);
   if (std::isinf(near)) return Visibility::kNoVote;
-  const double margin = tolerance.margin_m + tolerance.margin_ratio * z;
+  const double margin = tolerance.Margin(z);
   if (near > z + margin) return Visibility::kSeeThrough;
   if (near >= z - margin) return Visibility::kSupport;
   return Visibility::kNoVote;  // something nearer occludes the point

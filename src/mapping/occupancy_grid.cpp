@@ -200,19 +200,12 @@ Floor FloorOf(const std::vector<Eigen::Vector3f>& map_points_world, const Eigen:
 
 namespace {
 
-// The map's points in the band (G), and the grid's extent: those points, the cameras and the ends
-// of their rays, with a cell of margin. Throws when it exceeds kMaxCells.
-std::vector<Eigen::Vector3d> SizeGrid(const std::vector<Eigen::Vector3f>& map_points_world,
-                                      const std::vector<GridView>& views, const GridFrame& frame,
-                                      OccupancyGrid* grid) {
-  std::vector<Eigen::Vector3d> obstacles;
+// The grid's extent: `obstacles` (G), the cameras and the ends of their rays, with a cell of
+// margin. Throws when it exceeds kMaxCells.
+void SizeGrid(const std::vector<Eigen::Vector3d>& obstacles, const std::vector<GridView>& views,
+              const GridFrame& frame, OccupancyGrid* grid) {
   Eigen::AlignedBox2d box;
-  for (const Eigen::Vector3f& p : map_points_world) {
-    const Eigen::Vector3d g = frame.ToGrid(p.cast<double>());
-    if (g.z() < grid->min_height_m || g.z() > grid->max_height_m) continue;
-    obstacles.push_back(g);
-    box.extend(g.head<2>());
-  }
+  for (const Eigen::Vector3d& g : obstacles) box.extend(g.head<2>());
   for (const GridView& view : views) {
     box.extend(frame.ToGrid(view.camera_world).head<2>());
     for (const Eigen::Vector3f& p : view.points_world) {
@@ -230,29 +223,31 @@ std::vector<Eigen::Vector3d> SizeGrid(const std::vector<Eigen::Vector3f>& map_po
                              std::to_string(grid->height) + " cells exceed the limit " +
                              std::to_string(kMaxCells) + " (grid.cell_size_m too small?)");
   }
-  return obstacles;
 }
 
 // The points of `map_points_world` in the grid's band that a view measured and that the views
-// do not see through (FreeSpaceTolerance::Transient of their votes, VoteByViews): a moving
+// do not see through (FreeSpaceTolerance::Transient of their votes, VoteByViews), in G: a moving
 // object's point that entered the map stays out of the grid when views, before or after, saw
 // past it as often as they hit it; a point no view measured within the depth noise (a depth
 // outlier behind a wall, whose own view's nearest range in that direction is the wall's) too.
-std::vector<Eigen::Vector3f> SeenByViews(const std::vector<Eigen::Vector3f>& map_points_world,
-                                         const std::vector<GridView>& views,
-                                         const GridFrame& frame, const OccupancyGrid& grid,
-                                         const ViewVoteTolerance& tolerance) {
+std::vector<Eigen::Vector3d> Obstacles(const std::vector<Eigen::Vector3f>& map_points_world,
+                                       const std::vector<GridView>& views, const GridFrame& frame,
+                                       const OccupancyGrid& grid,
+                                       const ViewVoteTolerance& tolerance) {
   std::vector<Eigen::Vector3f> in_band;
+  std::vector<Eigen::Vector3d> in_band_grid;
   for (const Eigen::Vector3f& p : map_points_world) {
-    const double z = frame.ToGrid(p.cast<double>()).z();
-    if (z >= grid.min_height_m && z <= grid.max_height_m) in_band.push_back(p);
+    const Eigen::Vector3d g = frame.ToGrid(p.cast<double>());
+    if (!(g.z() >= grid.min_height_m && g.z() <= grid.max_height_m)) continue;
+    in_band.push_back(p);
+    in_band_grid.push_back(g);
   }
   const std::vector<RayVotes> votes = VoteByViews(in_band, views, tolerance, kViewBinRad);
-  std::vector<Eigen::Vector3f> kept;
+  std::vector<Eigen::Vector3d> kept;
   for (size_t k = 0; k < in_band.size(); ++k) {
     const RayVotes& v = votes[k];
     if (v.measured >= 1 && !tolerance.see_through.Transient(v.misses, v.hits)) {
-      kept.push_back(in_band[k]);
+      kept.push_back(in_band_grid[k]);
     }
   }
   return kept;
@@ -307,7 +302,8 @@ OccupancyGrid BuildOccupancyGrid(const std::vector<Eigen::Vector3f>& map_points_
   grid.T_world_grid.translation() = c - (up.dot(c) - grid.floor.height_m) * up;
   const GridFrame frame{grid.T_world_grid.inverse()};
   const std::vector<Eigen::Vector3d> obstacles =
-      SizeGrid(SeenByViews(map_points_world, views, frame, grid, votes), views, frame, &grid);
+      Obstacles(map_points_world, views, frame, grid, votes);
+  SizeGrid(obstacles, views, frame, &grid);
   grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, kCellUnknown);
   for (const Eigen::Vector3d& g : obstacles) {
     const Eigen::Vector2i cell = grid.CellOf(g.head<2>());

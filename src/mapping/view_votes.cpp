@@ -101,12 +101,11 @@ std::vector<RayVotes> VoteByViews(const std::vector<Eigen::Vector3f>& points_wor
     for (size_t k = 0; k < points_world.size(); ++k) {
       const Eigen::Vector3f d = points_world[k] - camera;
       const float r = d.norm();
-      if (r < tolerance.see_through.min_depth_m || r > tolerance.see_through.max_depth_m) continue;
+      if (!tolerance.see_through.InRange(r)) continue;
       float own, nearest;
       bins.Ranges(d, &own, &nearest);
       if (nearest == kNone) continue;
-      const FreeSpaceTolerance& see_through = tolerance.see_through;
-      const float margin = static_cast<float>(see_through.margin_m + see_through.margin_ratio * r);
+      const float margin = static_cast<float>(tolerance.see_through.Margin(r));
       if (nearest > r + margin) {
         ++votes[k].misses;
       } else if (std::abs(own - r) <= margin) {

@@ -1,7 +1,6 @@
 #include "dslam/ros/grid_publisher.h"
 
 #include <algorithm>
-
 #include <string>
 
 #include "dslam/ros/service_reply.h"

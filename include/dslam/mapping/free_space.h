@@ -39,6 +39,11 @@ struct FreeSpaceTolerance {
   /// Whether a point with `misses` see-throughs and `hits` supports (its own keyframes
   /// included) is transient: misses >= min_misses and misses >= hits.
   bool Transient(int misses, int hits) const { return misses >= min_misses && misses >= hits; }
+  /// Whether a point at `depth_m` [m] from the camera gets a vote: within [min_depth_m,
+  /// max_depth_m] (NaN: no).
+  bool InRange(double depth_m) const { return depth_m >= min_depth_m && depth_m <= max_depth_m; }
+  /// [m] the margin at `depth_m` [m]: margin_m + margin_ratio depth_m.
+  double Margin(double depth_m) const { return margin_m + margin_ratio * depth_m; }
 };
 
 /// A keyframe's depth image reduced to blocks of block_px x block_px pixels, each the nearest
