@@ -54,6 +54,8 @@ std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& l
   for (PointId id : newest.points) newest_points.Insert(id);
   Ranked covisible, nearby;
   for (size_t i = recent; i < all.size(); ++i) {
+    // A frozen map's older temporary keyframes leave it (Map::AddKeyFrame): only loaded ones join.
+    if (map.frozen() && !map.IsFrozenKeyFrame(all[i]->id)) continue;
     const int shared = SharedPoints(*all[i], newest_points);
     if (shared >= kMinCovisiblePoints) {
       covisible.emplace_back(shared, all[i]->id);

@@ -178,6 +178,36 @@ TEST(OdometryLocalisation, LocalisationOnlyStaysLostWhereExtendingReinitialises)
   }
 }
 
+// Localisation only with tracking.covisible_keyframes 0 (the default): once more temporary
+// keyframes were made than the window's newest keyframes, the window must still hold loaded
+// keyframes around the pose, so that tracking searches the loaded points there (before, the
+// window was the newest temporary keyframes alone and tracking drifted on their new points).
+TEST(OdometryLocalisation, LocalisationOnlyKeepsLoadedKeyFramesInTheWindow) {
+  const test::RenderedSequence& room = test::SharedSequence(kScene, kFrames);
+  Config config;
+  config.tracking.window_keyframes = 3;
+  config.tracking.keyframe_max_interval = 2;  // a temporary keyframe at least every 2 frames
+  ASSERT_EQ(config.tracking.covisible_keyframes, 0);
+  Odometry odometry{config};
+  Map loaded = MapOfFirstFrames(kFrames);
+  const int loaded_end = loaded.AllKeyFrames().back()->id + 1;
+  odometry.StartInMap(std::move(loaded), std::make_shared<FixedPlaces>(std::vector<int>{0}), 5.0,
+                      LoadedMapUse::kLocalisationOnly);
+  int temporary = 0;
+  for (int i = 2; i < kFrames; ++i) {
+    const FrameResult result = odometry.ProcessFrame(room.frames[i]);
+    ASSERT_TRUE(result.has_pose) << i;
+    temporary += result.keyframe ? 1 : 0;
+    if (temporary <= config.tracking.window_keyframes) continue;
+    int loaded_in_window = 0;
+    for (const KeyFrame& keyframe : odometry.map().keyframes()) {
+      loaded_in_window += keyframe.id < loaded_end ? 1 : 0;
+    }
+    EXPECT_GE(loaded_in_window, 1) << "frame " << i << ": no loaded keyframe in the window";
+  }
+  EXPECT_GT(temporary, 2 * config.tracking.window_keyframes);
+}
+
 TEST(OdometryLocalisation, StartInMapRefusesWhatCannotLocalise) {
   Odometry odometry{Config()};
   EXPECT_THROW(odometry.StartInMap(Map(), nullptr, 1.0), std::invalid_argument);
