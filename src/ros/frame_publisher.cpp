@@ -51,6 +51,7 @@ void FramePublisher::Publish(const FrameResult& result, const RgbdFrame& frame,
                              const std_msgs::Header& header, const Eigen::Isometry3d& T_base_camera,
                              const FrameCounters& counters, double latency_ms) {
   odom_.Add(result);
+  twist_.Add(result, odom_.T_odom_camera(), T_base_camera);
   std_msgs::Header odom_header = header;
   odom_header.frame_id = config_.odom_frame;
   const WorldDataFrame world = WorldData(T_base_camera);
@@ -103,6 +104,15 @@ void FramePublisher::PublishOdom(const FrameResult& result, const std_msgs::Head
       OdomCovariance(result.information, odom_.T_odom_camera(), T_base_camera);
   for (int r = 0; r < 6; ++r) {
     for (int c = 0; c < 6; ++c) odom.pose.covariance[6 * r + c] = covariance(r, c);
+  }
+  odom.twist.twist.linear.x = twist_.velocity()(0);
+  odom.twist.twist.linear.y = twist_.velocity()(1);
+  odom.twist.twist.linear.z = twist_.velocity()(2);
+  odom.twist.twist.angular.x = twist_.velocity()(3);
+  odom.twist.twist.angular.y = twist_.velocity()(4);
+  odom.twist.twist.angular.z = twist_.velocity()(5);
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 6; ++c) odom.twist.covariance[6 * r + c] = twist_.covariance()(r, c);
   }
   odom_pub_.publish(odom);
 }

@@ -82,6 +82,7 @@ class OdometryBagTest(unittest.TestCase):
         covariance = np.array(odom.pose.covariance).reshape(6, 6)
         np.testing.assert_allclose(covariance, covariance.T, atol=1e-12)
         self.assertGreater(np.linalg.eigvalsh(covariance).min(), 0.0)
+        self.check_twist(rec.messages("odom"))
         out = os.path.join(work, "trajectory.txt")
         result = rospy.ServiceProxy("/dslam/save_trajectory", SaveTrajectory)(out)
         self.assertTrue(result.success, result.message)
@@ -102,6 +103,36 @@ class OdometryBagTest(unittest.TestCase):
         self.assertTrue(all(marker.header.frame_id == "map"
                             for array in rec.messages("graph_edges") for marker in array.markers))
         self.check_static_map(rec, work)
+
+    def check_twist(self, odoms):
+        """Each odom's twist is the base's motion since the previous odom pose over their time
+        apart, in the base's axes (the first one unknown: zero, 1e6 on the diagonal), with a
+        symmetric positive definite covariance from the third on (the first pose has none)."""
+        first = np.array(odoms[0].twist.covariance).reshape(6, 6)
+        np.testing.assert_allclose(first, 1e6 * np.eye(6))
+        worst = 0.0
+        for i, (previous, odom) in enumerate(zip(odoms, odoms[1:])):
+            T = (np.linalg.inv(matrix(previous.pose.pose.position, previous.pose.pose.orientation))
+                 @ matrix(odom.pose.pose.position, odom.pose.pose.orientation))
+            dt = (odom.header.stamp - previous.header.stamp).to_sec()
+            R = T[:3, :3]
+            angle = np.arccos(np.clip((np.trace(R) - 1.0) / 2.0, -1.0, 1.0))
+            axis_sin = 0.5 * np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+            rotvec = axis_sin * (angle / np.sin(angle) if angle > 1e-12 else 1.0)
+            expected = np.concatenate([T[:3, 3], rotvec]) / dt
+            t = odom.twist.twist
+            got = np.array([t.linear.x, t.linear.y, t.linear.z,
+                            t.angular.x, t.angular.y, t.angular.z])
+            worst = max(worst, np.abs(got - expected).max())
+            if i == 0:  # the first pose (the origin, not solved) has no information
+                continue
+            covariance = np.array(odom.twist.covariance).reshape(6, 6)
+            np.testing.assert_allclose(covariance, covariance.T, rtol=1e-9, atol=1e-15)
+            self.assertGreater(np.linalg.eigvalsh(covariance).min(), 0.0)
+            self.assertLess(covariance.diagonal().max(), 1e6)
+        rospy.loginfo("odometry_bag_check: twist differs from the odom poses' motion by %.2g at "
+                      "most", worst)
+        self.assertLess(worst, 1e-6)  # m/s and rad/s: the poses' float64 round-off over dt
 
     def check_map_odom(self, rec, trajectory, expect_corrections):
         """map -> odom on /tf with each odom message's stamp; map -> odom -> base (odom's pose)

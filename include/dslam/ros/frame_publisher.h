@@ -19,6 +19,7 @@
 #include "dslam/ros/keyframe_map_outputs.h"
 #include "dslam/ros/node_config.h"
 #include "dslam/ros/odom_integrator.h"
+#include "dslam/ros/odom_twist.h"
 #include "dslam/tracking/frame_result.h"
 
 namespace dslam {
@@ -79,6 +80,7 @@ class FramePublisher {
   void StartNewRun() {
     path_.clear();
     odom_.Restart();
+    twist_.Restart();
   }
 
   /// Where the data of the tracker's world goes for the frame last published, with the camera
@@ -110,6 +112,7 @@ class FramePublisher {
   ros::Publisher static_pub_, dynamic_pub_, edges_pub_, features_pub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   OdomIntegrator odom_;                          ///< the continuous odom pose and map -> odom
+  OdomTwist twist_;                              ///< odom's twist: the base's velocity
   std::deque<geometry_msgs::PoseStamped> path_;  ///< at most path_max_poses, oldest first
   ros::WallTime path_published_;                 ///< last publication of the path
   LoopStatus loops_;                             ///< SetLoopStatus
