@@ -141,7 +141,7 @@ function(dslam_library part)
   target_link_options(dslam_${part} PRIVATE -Wl,--no-undefined)
   # Calls inside the library bind to its own functions (no interposition by another shared
   # object), so GCC may inline them: CGAL's Delaunay code in dslam_static_points runs about 1.3x
-  # faster (BENCHMARKS.md, "Delaunay graph"); results are the same.
+  # faster (docs/benchmarks/speed.md, "Delaunay graph"); results are the same.
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     target_compile_options(dslam_${part} PRIVATE -fno-semantic-interposition)
   endif()

@@ -19,7 +19,8 @@ namespace {
 // Fewer window keyframes: no local BA.
 constexpr int kMinKeyFrames = 2;
 // Points measured in fewer window keyframes are not optimised. 3 was tried and not adopted: Bonn
-// 51.1 -> 62.4 mm (BENCHMARKS.md, "Back end on or off, seeds 1-5 and `walking` over 20 seeds").
+// 51.1 -> 62.4 mm (docs/benchmarks/backend.md, "Back end on or off, seeds 1-5 and `walking`
+// over 20 seeds").
 constexpr int kMinPointKeyFrames = 2;
 // Keyframes with fewer optimised points keep their pose.
 constexpr int kMinKeyFramePoints = 10;

@@ -76,7 +76,8 @@ CorrelationInput CollectProblem(const Map& map, const std::vector<int>& keyframe
 bool LosesMark(PointLabel label) { return label == PointLabel::kDynamic; }
 
 // Per component of `result`: whether its points labelled moving lose their marks. Algorithm 1
-// unmarks every component but the static one; two departures (BENCHMARKS.md, "Issue 32, part 6"):
+// unmarks every component but the static one; two departures (docs/benchmarks/backend.md, "Issue
+// 32, part 6"):
 // - A component of fewer than backend.spd_min_dynamic_points points keeps its marks: over a
 //   window of up to 12 keyframes one bad measurement (blur, a depth edge) cuts a few points off,
 //   while a moving body is cut off with many (on TUM rpy, where nothing moves, mostly 2-4).

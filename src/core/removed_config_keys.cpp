@@ -15,7 +15,7 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
      "no measurement changed it; now 30 px (orb_pyramid.cpp)"},
     {"pose", "solver",
      "the Levenberg-Marquardt solver always runs; Ceres gave the same trajectories, slower "
-     "(BENCHMARKS.md, \"Motion-only BA solver\"), and stays the tests' reference"},
+     "(docs/benchmarks/tracking.md, \"Motion-only BA solver\"), and stays the tests' reference"},
     {"pose", "ransac_max_iterations",
      "no measurement changed it; now kRansacMaxHypotheses 300"},
     {"pose", "ransac_confidence",
@@ -31,9 +31,9 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
     {"static_points", "min_component_points",
      "no measurement changed it; now 4 (StaticSelectionOptions)"},
     {"tracking", "unmarked_search_radius_px",
-     "tried, off: BENCHMARKS.md, \"Unmarked points searched wider\""},
+     "tried, off: docs/benchmarks/mapping.md, \"Unmarked points searched wider\""},
     {"tracking", "unmarked_max_offset_m",
-     "tried, off: BENCHMARKS.md, \"Unmarked points searched wider\""},
+     "tried, off: docs/benchmarks/mapping.md, \"Unmarked points searched wider\""},
     {"tracking", "search_min_depth_m",
      "no measurement changed it; now 0.1 m (odometry_steps.cpp)"},
     {"tracking", "init_min_points_factor",
@@ -42,22 +42,24 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
      "the keyframes always: previous (the paper's) and both lost on every sequence with people "
      "(BENCHMARKS.md, \"Issue 50: switches no measurement chose\")"},
     {"tracking", "fuse_static_points",
-     "tried, off: BENCHMARKS.md, \"Issue 46, part 4\" (better where nothing moves, worse on "
-     "Bonn crowd 300-599, TUM rpy and walking)"},
+     "tried, off: docs/benchmarks/tracking.md, \"Issue 46, part 4\" (better where nothing "
+     "moves, worse on Bonn crowd 300-599, TUM rpy and walking)"},
     {"tracking", "descriptor_observations",
-     "tried, off: BENCHMARKS.md, \"Map point descriptors refined from their observations\""},
+     "tried, off: docs/benchmarks/tracking.md, \"Map point descriptors refined from their "
+     "observations\""},
     {"tracking", "cull_min_visible",
      "no measurement changed it; now 8 (odometry_keyframes.cpp)"},
     {"tracking", "robust_pose_points",
      "the marked matches always vote first, then all: `all` gave the same trajectories, "
-     "`marked` lost frames (BENCHMARKS.md, \"Back end, part 1\")"},
+     "`marked` lost frames (docs/benchmarks/backend.md, \"Back end, part 1\")"},
     {"tracking", "relocalisation_max_distance_bits",
      "no measurement changed it; now 64 (DescriptorMatchRules)"},
     {"tracking", "relocalisation_ratio",
      "no measurement changed it; now 0.8 (DescriptorMatchRules)"},
     {"backend", "spd_unmark_isolated",
      "it changed nothing: an isolated point is a component of one point, below "
-     "spd_min_dynamic_points, so it keeps its mark either way (BENCHMARKS.md, \"Issue 46, part 4\")"},
+     "spd_min_dynamic_points, so it keeps its mark either way (docs/benchmarks/tracking.md, "
+     "\"Issue 46, part 4\")"},
     {"backend", "spd_enabled",
      "always on with static_points.enabled: local BA alone lost (`git show "
      "0da3eda:BENCHMARKS.md`, \"Back end, part 2\")"},
@@ -66,7 +68,8 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
     {"backend", "ba_min_keyframes",
      "no measurement changed it; now 2"},
     {"backend", "ba_min_point_keyframes",
-     "now 2: 3 was tried and not adopted (BENCHMARKS.md, \"Back end on or off, seeds 1-5\")"},
+     "now 2: 3 was tried and not adopted (docs/benchmarks/backend.md, \"Back end on or off, "
+     "seeds 1-5\")"},
     {"backend", "ba_min_keyframe_points",
      "no measurement changed it; now 10"},
     {"backend", "ba_max_iterations",
@@ -76,7 +79,7 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
     {"backend", "ba_chi2",
      "merged into pose.chi2_depth"},
     {"dynamic_mask", "depth_change_seeds",
-     "always on: BENCHMARKS.md, \"Depth-change seeds of the dynamic mask\""},
+     "always on: docs/benchmarks/mapping.md, \"Depth-change seeds of the dynamic mask\""},
     {"dynamic_mask", "depth_change_stride",
      "no measurement changed it; now kDepthChangeStride 2"},
     {"objects", "min_cells",
@@ -86,11 +89,11 @@ constexpr RemovedConfigKey kRemovedKeys[] = {
     {"objects", "split_min_points",
      "no measurement changed it; now kSplitMinPoints 5"},
     {"objects", "carry_points",
-     "always on: BENCHMARKS.md, \"Lost points carried by optical flow, stacked regions "
-     "joined\""},
+     "always on: docs/benchmarks/mapping.md, \"Lost points carried by optical flow, stacked "
+     "regions joined\""},
     {"objects", "join_stacked_regions",
-     "always on: BENCHMARKS.md, \"Lost points carried by optical flow, stacked regions "
-     "joined\""},
+     "always on: docs/benchmarks/mapping.md, \"Lost points carried by optical flow, stacked "
+     "regions joined\""},
     {"objects", "carry_window_px",
      "no measurement changed it; now PointCarrier::kWindowPx 11"},
     {"objects", "carry_levels",

@@ -40,7 +40,7 @@ bool StrongerFirst(const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.resp
 // (FastPerCell: the keypoints of one cv::FAST call per cell, found with fewer calls).
 // (Plain whole-level suppression, across cell borders, changes about 4.5 % of the keypoints, and
 // the synthetic walking sequences then lose track in 3 of the 5 seeds that tracked before:
-// BENCHMARKS.md.)
+// docs/benchmarks/speed.md.)
 std::vector<std::vector<cv::KeyPoint>> DetectCells(const cv::Mat& level,
                                                    const FeaturesConfig& config) {
   FastGrid grid;

@@ -72,9 +72,9 @@ Eigen::Isometry3d ErrorAt(const Trajectory& estimated, const Trajectory& truth, 
 }
 
 // Synthetic `walking` seed 2: walkers cover 80-93 % of the view around frames 60-110 and the pose
-// turns by ~11 deg while they do (BENCHMARKS.md, issue 32 part 2); re-anchoring (reanchoring.h)
-// brings the map made since back onto the older one when the view clears (measured: frame 146,
-// then 14-20 mm off to frame 159, against 310-320 mm without).
+// turns by ~11 deg while they do (docs/benchmarks/tracking.md, issue 32 part 2); re-anchoring
+// (reanchoring.h) brings the map made since back onto the older one when the view clears
+// (measured: frame 146, then 14-20 mm off to frame 159, against 310-320 mm without).
 TEST(SlamRegression, ReanchoringUndoesATurnWhilePeopleCoverTheView) {
   constexpr int kFrames = 160;
   const Rendered rendered = RenderSequence("walking", kFrames, 2);

@@ -102,7 +102,8 @@ TEST(Config, RemovedKeysAreNotParameters) {
       FindRemovedConfigKey("tracking", "descriptor_observations");
   ASSERT_NE(descriptors, nullptr);
   EXPECT_EQ(descriptors->reason,
-            "tried, off: BENCHMARKS.md, \"Map point descriptors refined from their observations\"");
+            "tried, off: docs/benchmarks/tracking.md, \"Map point descriptors refined from their "
+            "observations\"");
 }
 
 TEST(Config, YamlRejectsKeysThatAreNotNames) {

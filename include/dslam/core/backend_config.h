@@ -22,9 +22,9 @@ struct BackendConfig {
   template <typename Self, typename Visitor>
   static void Fields(Self& s, Visitor&& v) {
     // Off by default until it beats the front end alone on every benchmark sequence. Measured
-    // last in BENCHMARKS.md, "Issue 32, part 6" (mean ATE, off -> on): Bonn 0.0566 -> 0.0556,
-    // close_person 0.0199 -> 0.0168, room_tour (with loop closing) 0.120 -> 0.036, but TUM rpy
-    // 0-119 0.0324 -> 0.0336, walking over 20 seeds 0.068 -> 0.072 and walking_static 0.015 ->
+    // last in docs/benchmarks/backend.md, "Issue 32, part 6" (mean ATE, off -> on): Bonn 0.0566 ->
+    // 0.0556, close_person 0.0199 -> 0.0168, room_tour (with loop closing) 0.120 -> 0.036, but TUM
+    // rpy 0-119 0.0324 -> 0.0336, walking over 20 seeds 0.068 -> 0.072 and walking_static 0.015 ->
     // 0.050 (one seed jumps while a walker fills the view). Its BA rejects 20-40 % of the
     // measurements on real data (rpy: the inliers fit, chi2/dof 0.9-1.06; the rest is a tail).
     v(Flag("enabled", "local mapping after each keyframe; off = front end alone"), s.enabled);

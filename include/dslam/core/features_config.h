@@ -23,8 +23,9 @@ struct DepthNoiseConfig {
             "keypoint sigma_u = sigma_v at pyramid level 0 (x scale^level)"),
       s.pixel_sigma_px);
     // 0.008: what the pose needs from a structured-light camera (Kinect v1, Xtion; fitted on
-    // TUM and Bonn frames, BENCHMARKS.md "Issue 46"), whose depth errors are correlated over
-    // the image and over frames; a camera.yaml may state its camera's own (dataset_io.h).
+    // TUM and Bonn frames, docs/benchmarks/tracking.md "Issue 46"), whose depth errors are
+    // correlated over the image and over frames; a camera.yaml may state its camera's own
+    // (dataset_io.h).
     v(Field("sigma_d_quadratic", "1/m", 0.0, 0.1, "a in depth sigma_d = a d^2 + b"),
       s.sigma_d_quadratic);
     v(Field("sigma_d_constant_m", "m", 0.0, 0.1, "b in depth sigma_d = a d^2 + b"),

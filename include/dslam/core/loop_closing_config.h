@@ -31,7 +31,7 @@ struct LoopClosingConfig {
       s.consistent_keyframes);
     // The words are the map points' descriptors (loop_detector.h), so covisible keyframes share
     // many words exactly and score high: ORB-SLAM2's 0.6 closed no loop on room_tour seed 1,
-    // 0.3 none, 0.1 the three true ones (BENCHMARKS.md, "Issue 33, part 2").
+    // 0.3 none, 0.1 the three true ones (docs/benchmarks/loop-closing.md, "Issue 33, part 2").
     v(Field("min_score_ratio", "-", 0.0, 10.0,
             "a candidate scores at least this times the query's best covisible keyframe"),
       s.min_score_ratio);

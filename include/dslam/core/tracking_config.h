@@ -72,7 +72,7 @@ struct TrackingConfig {
     // from its measurement in the last tracked frame instead, more points stay matched where
     // that position has aged (LocalMapSearch::last_frame, local_map_matching.h). On by default:
     // Bonn crowd 300-599 tracks 300 of 300 frames (294 without), mean ATE over seeds 1-5
-    // walking_static 18.7 -> 15.4 mm, walking_halfsphere 22.3 -> 20.8 (BENCHMARKS.md).
+    // walking_static 18.7 -> 15.4 mm, walking_halfsphere 22.3 -> 20.8 (docs/benchmarks/backend.md).
     v(Flag("follow_last_measurement",
            "search marked points measured in the last tracked frame around that measurement "
            "instead of their map position"),
@@ -154,8 +154,8 @@ struct TrackingConfig {
            "when tracking fails, match the frame by descriptor against the window's marked "
            "points and take a RANSAC pose from them"),
       s.relocalisation);
-    // Measured (BENCHMARKS.md): true relocalisations after dropped frames 0.94-0.95; poses of
-    // people not yet unmarked on Bonn crowd 0.27, on walking_halfsphere 0.39.
+    // Measured (docs/benchmarks/loop-closing.md): true relocalisations after dropped frames
+    // 0.94-0.95; poses of people not yet unmarked on Bonn crowd 0.27, on walking_halfsphere 0.39.
     v(Field("relocalisation_min_inlier_share", "-", 0.0, 1.0,
             "a relocalised pose needs at least this share of the descriptor matches as inliers"),
       s.relocalisation_min_inlier_share);

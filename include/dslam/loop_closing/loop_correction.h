@@ -24,7 +24,8 @@ constexpr double kOdometryEdgeSigmaM = 0.01;  ///< [m] spanning-tree and covisib
 constexpr double kOdometryEdgeSigmaRad = 0.0035;  ///< [rad] (0.2 deg)
 /// Factor on the spanning-tree edge sigmas of a keyframe whose motion from the previous one rests
 /// on a weak episode (KeyFrame::weak_since_previous): where people covered the view, the pose
-/// can jump (BENCHMARKS.md, "Issue 33, part 1"), and the loop's error belongs there.
+/// can jump (docs/benchmarks/loop-closing.md, "Issue 33, part 1"), and the loop's error belongs
+/// there.
 constexpr double kWeakEdgeSigmaScale = 10.0;
 constexpr double kLoopEdgeSigmaM = 0.005;         ///< [m] the loop edge
 constexpr double kLoopEdgeSigmaRad = 0.0017;      ///< [rad] (0.1 deg)

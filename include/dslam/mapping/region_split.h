@@ -30,8 +30,8 @@
 // Why the parts and not the point groups are tested: a second person emerging beside a nearer
 // one has few points, often near the border of the two, and velocities noisy enough that some
 // land in the other group; the groups' median positions can then lie closer than a body's width
-// while the two bodies' cells do not (measured on the synthetic walking scenarios, BENCHMARKS.md
-// "Regions split across the view").
+// while the two bodies' cells do not (measured on the synthetic walking scenarios,
+// docs/benchmarks/mapping.md, "Regions split across the view").
 
 #include <deque>
 

@@ -32,8 +32,8 @@ struct RoomParams {
 /// surface's depth spreads onto the farther one. With the defaults the disparity error has a
 /// standard deviation of 0.15 px: a depth sigma of 0.0038 d^2 per measurement [m, d in m] at
 /// fx 525 px and b 0.075 m, and 0.0054 d^2 between two measurements, as the depth residuals of
-/// real Kinect frames show (0.0046-0.0065 d^2 on Bonn crowd; BENCHMARKS.md, "Issue 46, part 1").
-/// Replaces SensorParams' Gaussian depth noise when enabled.
+/// real Kinect frames show (0.0046-0.0065 d^2 on Bonn crowd; docs/benchmarks/tracking.md, "Issue
+/// 46, part 1"). Replaces SensorParams' Gaussian depth noise when enabled.
 struct StructuredLightParams {
   bool enabled = false;
   double baseline_m = 0.075;         ///< [m] projector to depth camera

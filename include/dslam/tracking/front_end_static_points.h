@@ -7,12 +7,13 @@
 //
 // Which frames: the paper compares the previous frame with the current one. At 30 Hz that
 // baseline is too short to see walking people (edge changes are the size of the depth noise;
-// window settings compared in BENCHMARKS.md), so by default ("keyframes") the current frame is
-// compared with up to `front_end_keyframes` keyframes spread over the local window, in which the
-// points were measured when the keyframe was made: the baseline is then up to the window's time
-// span. Measurements of one frame share that frame's pose, so only each frame's rotation enters
-// z_ijk = y_ik - y_jk (translation cancels) and drift between keyframes cannot fake inconsistency.
-// "previous" is the paper's choice and "both" uses the keyframes and the previous frame.
+// window settings compared in docs/benchmarks/static-points.md), so by default ("keyframes") the
+// current frame is compared with up to `front_end_keyframes` keyframes spread over the local
+// window, in which the points were measured when the keyframe was made: the baseline is then up to
+// the window's time span. Measurements of one frame share that frame's pose, so only each frame's
+// rotation enters z_ijk = y_ik - y_jk (translation cancels) and drift between keyframes cannot fake
+// inconsistency. "previous" is the paper's choice and "both" uses the keyframes and the previous
+// frame.
 
 #include <vector>
 

@@ -57,7 +57,7 @@ struct PoseResult {
 
 /// How EstimatePose solves each round. dslam runs kLevenbergMarquardt (pose_solver_lm.cpp);
 /// kCeres solves the same cost with Ceres: the reference the tests and dslam_features_bench check
-/// the hand-written solver against (BENCHMARKS.md, "Motion-only BA solver": the same
+/// the hand-written solver against (docs/benchmarks/tracking.md, "Motion-only BA solver": the same
 /// trajectories, slower).
 enum class PoseSolver { kLevenbergMarquardt, kCeres };
 

@@ -1,10 +1,10 @@
 #pragma once
 // Re-anchoring after a weak episode. While people cover most of the view the pose rests on few
 // static points and can turn away from the truth; the keyframes and points made meanwhile agree
-// with the wrong pose, so the local map keeps it after the view clears (BENCHMARKS.md, issue 32
-// part 2: synthetic `walking` seeds 2-5 turn by 11-19 deg while walkers cover 80-93 % of the
-// image). A weak episode begins at a tracked frame with fewer than
-// tracking.reanchor_weak_inliers pose inliers. At a later frame with at least
+// with the wrong pose, so the local map keeps it after the view clears
+// (docs/benchmarks/tracking.md, issue 32 part 2: synthetic `walking` seeds 2-5 turn by 11-19 deg
+// while walkers cover 80-93 % of the image). A weak episode begins at a tracked frame with fewer
+// than tracking.reanchor_weak_inliers pose inliers. At a later frame with at least
 // tracking.reanchor_strong_inliers (and kMinWeakFrames after the episode began), the frame is
 // matched by descriptor against the verified static points made before the episode; a RANSAC pose
 // over those matches (verified points only: people cannot vote) says where the older map puts
