@@ -37,14 +37,14 @@ using local_ba::Window;
 Window CollectWindow(const Map& map, int min_keyframes) {
   Window window;
   std::unordered_map<PointId, int> seen_in;
-  for (const KeyFrame& keyframe : map.keyframes()) {
+  for (const KeyFrame& keyframe : map.window()) {
     for (const auto& [id, m] : keyframe.measurements.by_point) {
       const MapPoint* point = map.Find(id);
       if (point != nullptr && point->IsVerifiedStatic()) ++seen_in[id];
     }
   }
-  for (size_t k = 0; k < map.keyframes().size(); ++k) {
-    const KeyFrame& keyframe = map.keyframes()[k];
+  for (size_t k = 0; k < map.window().size(); ++k) {
+    const KeyFrame& keyframe = map.window()[k];
     const Eigen::Isometry3d& T = keyframe.measurements.T_camera_world;
     window.poses.push_back({Eigen::Quaterniond(T.rotation()), T.translation()});
     window.frozen_pose.push_back(map.IsFrozenKeyFrame(keyframe.id));
@@ -174,8 +174,8 @@ double Chi2PerDegreeOfFreedom(const Window& window, const std::vector<bool>& cou
 void CarryUnoptimisedPoints(const Window& window, const std::vector<Eigen::Isometry3d>& correction,
                             Map* map) {
   std::unordered_map<PointId, int> newest_keyframe;
-  for (size_t k = 0; k < map->keyframes().size(); ++k) {
-    for (const auto& [id, m] : map->keyframes()[k].measurements.by_point) {
+  for (size_t k = 0; k < map->window().size(); ++k) {
+    for (const auto& [id, m] : map->window()[k].measurements.by_point) {
       if (!window.points.count(id)) newest_keyframe[id] = static_cast<int>(k);
     }
   }
@@ -206,8 +206,8 @@ struct CorrectionSize {
 
 CorrectionSize LargestCorrection(const Window& window, const Map& map) {
   CorrectionSize largest;
-  for (size_t k = 0; k < map.keyframes().size(); ++k) {
-    const KeyFrame& keyframe = map.keyframes()[k];
+  for (size_t k = 0; k < map.window().size(); ++k) {
+    const KeyFrame& keyframe = map.window()[k];
     const Eigen::Isometry3d T_camera_world = OptimisedPose(window, k);
     const Eigen::Isometry3d T_world_camera = T_camera_world.inverse();
     const Eigen::Isometry3d& T_old = keyframe.T_world_camera;
@@ -231,7 +231,7 @@ CorrectionSize LargestCorrection(const Window& window, const Map& map) {
 // stay in their keyframes: they are the evidence with which static point determination finds
 // points that moved.
 void WriteBack(const Window& window, Map* map) {
-  std::deque<KeyFrame>& keyframes = map->mutable_keyframes();
+  std::deque<KeyFrame>& keyframes = map->mutable_window();
   std::vector<Eigen::Isometry3d> correction(keyframes.size());  // T_wc_new T_cw_old
   for (size_t k = 0; k < keyframes.size(); ++k) {
     correction[k] = Eigen::Isometry3d::Identity();
@@ -254,7 +254,7 @@ LocalBaStats LocalBundleAdjustment(const Config& full_config, Map* map) {
   const double chi2 = full_config.pose.chi2_depth;
   Stopwatch clock;
   LocalBaStats stats;
-  const int num_keyframes = static_cast<int>(map->keyframes().size());
+  const int num_keyframes = static_cast<int>(map->window().size());
   if (num_keyframes < kMinKeyFrames || num_keyframes <= config.ba_fixed_keyframes) {
     return stats;
   }

@@ -13,11 +13,11 @@ LocalMappingJob::LocalMappingJob(const Map& map, uint64_t generation)
       generation_(generation),
       first_new_point_id_(map.next_point_id()),
       map_corrections_(map.corrections()) {
-  if (!window_.keyframes().empty()) {
-    newest_keyframe_id_ = window_.keyframes().back().id;
-    T_world_newest_copied_ = window_.keyframes().back().T_world_camera;
+  if (!window_.window().empty()) {
+    newest_keyframe_id_ = window_.window().back().id;
+    T_world_newest_copied_ = window_.window().back().T_world_camera;
   }
-  for (const KeyFrame& keyframe : window_.keyframes()) {
+  for (const KeyFrame& keyframe : window_.window()) {
     for (const auto& entry : keyframe.measurements.by_point) {
       const MapPoint* point = window_.Find(entry.first);
       if (point != nullptr)
@@ -39,7 +39,7 @@ void LocalMappingJob::Apply(Map* map) const {
     return;
   }
   if (moved_keyframes()) {
-    for (const KeyFrame& refined : window_.keyframes()) {
+    for (const KeyFrame& refined : window_.window()) {
       KeyFrame* live = map->FindKeyFrame(refined.id);
       if (live == nullptr || map->IsFrozenKeyFrame(refined.id)) continue;
       live->T_world_camera = refined.T_world_camera;
@@ -67,14 +67,14 @@ void LocalMappingJob::ApplyToPoints(Map* map, bool move_points) const {
 }
 
 Eigen::Isometry3d LocalMappingJob::correction() const {
-  if (!moved_keyframes() || window_.keyframes().empty()) return Eigen::Isometry3d::Identity();
-  return window_.keyframes().back().T_world_camera * T_world_newest_copied_.inverse();
+  if (!moved_keyframes() || window_.window().empty()) return Eigen::Isometry3d::Identity();
+  return window_.window().back().T_world_camera * T_world_newest_copied_.inverse();
 }
 
 void LocalMappingJob::MoveWhatWasMadeSince(Map* map) const {
   const Eigen::Isometry3d T_new_old = correction();
   std::unordered_set<PointId> moved;
-  for (KeyFrame& keyframe : map->mutable_keyframes()) {
+  for (KeyFrame& keyframe : map->mutable_window()) {
     if (keyframe.id <= newest_keyframe_id_) continue;
     keyframe.T_world_camera = T_new_old * keyframe.T_world_camera;
     keyframe.measurements.T_camera_world = keyframe.T_world_camera.inverse();

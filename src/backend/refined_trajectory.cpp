@@ -113,8 +113,8 @@ RefinedTrajectory::~RefinedTrajectory() = default;
 
 void RefinedTrajectory::AddFrame(double stamp_s, const Eigen::Isometry3d& T_world_camera,
                                  const Map& map) {
-  if (map.keyframes().empty()) return;
-  const KeyFrame& reference = map.keyframes().back();
+  if (map.window().empty()) return;
+  const KeyFrame& reference = map.window().back();
   live_[reference.id] = reference.T_world_camera;
   if (live_.size() > live_limit_) RetireErased(map);
   open_frames_.push_back(
@@ -133,7 +133,7 @@ void RefinedTrajectory::CloseFrameBlock() {
 }
 
 void RefinedTrajectory::UpdateKeyFrames(const Map& map) {
-  for (const KeyFrame& keyframe : map.keyframes()) live_[keyframe.id] = keyframe.T_world_camera;
+  for (const KeyFrame& keyframe : map.window()) live_[keyframe.id] = keyframe.T_world_camera;
   for (const auto& [id, keyframe] : map.archived_keyframes()) {
     live_[id] = keyframe.T_world_camera;
   }

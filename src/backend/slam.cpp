@@ -84,8 +84,8 @@ void Slam::DeliverQueuedEvents(Lock& lock) {
 }
 
 void Slam::QueueKeyFrame(const RgbdFrame& frame, bool keep_points, FrameResult* result) {
-  if (result->keyframe && !map().keyframes().empty()) {
-    const KeyFrame& keyframe = map().keyframes().back();  // made from this frame
+  if (result->keyframe && !map().window().empty()) {
+    const KeyFrame& keyframe = map().window().back();  // made from this frame
     KeyFrameRecord record;
     record.id = keyframe.id;
     record.frame = frame;  // shallow: the images are shared, not copied
@@ -105,7 +105,7 @@ void Slam::QueueReset(ResetMode mode) {
 
 Slam::Delivery Slam::TakeEvents() {
   Delivery delivery = std::exchange(events_, Delivery());
-  for (const KeyFrame& keyframe : map().keyframes()) {
+  for (const KeyFrame& keyframe : map().window()) {
     delivery.window.push_back({keyframe.id, keyframe.T_world_camera});
   }
   return delivery;
@@ -155,7 +155,7 @@ BackEndStatus Slam::FinishLocalMapping(const LocalMappingJob& job) {
     if (refined_recording_ == RefinedPoseRecording::kOn) refined_.UpdateKeyFrames(map());
   }
   BackEndStatus status = job.status();
-  status.window_keyframes = static_cast<int>(map().keyframes().size());
+  status.window_keyframes = static_cast<int>(map().window().size());
   return status;
 }
 

@@ -18,7 +18,7 @@ constexpr int kMinCovisiblePoints = 20;
 // keyframe (the newest included), oldest first: the paper's "keyframes that have covisibility
 // with the currently added keyframe".
 std::vector<int> CovisibleKeyFrames(const Map& map, int min_shared) {
-  const auto& keyframes = map.keyframes();
+  const auto& keyframes = map.window();
   const FrameMeasurements& newest = keyframes.back().measurements;
   std::vector<int> covisible;
   for (size_t k = 0; k < keyframes.size(); ++k) {
@@ -37,7 +37,7 @@ CorrelationInput CollectProblem(const Map& map, const std::vector<int>& keyframe
                                 double rotation_variance, std::vector<PointId>* ids) {
   std::unordered_map<PointId, int> measured_in;
   for (int k : keyframes) {
-    for (const auto& entry : map.keyframes()[k].measurements.by_point) {
+    for (const auto& entry : map.window()[k].measurements.by_point) {
       const MapPoint* point = map.Find(entry.first);
       if (point != nullptr && point->marked) ++measured_in[entry.first];
     }
@@ -54,7 +54,7 @@ CorrelationInput CollectProblem(const Map& map, const std::vector<int>& keyframe
     input.points_world.push_back(map.Find(id)->p_world);
   }
   for (size_t f = 0; f < keyframes.size(); ++f) {
-    const FrameMeasurements& frame = map.keyframes()[keyframes[f]].measurements;
+    const FrameMeasurements& frame = map.window()[keyframes[f]].measurements;
     input.T_camera_world.push_back(frame.T_camera_world);
     input.rotation_covariance.push_back(rotation_variance * Eigen::Matrix3d::Identity());
     for (PointId id : *ids) {  // increasing id: the same order in every run
@@ -106,7 +106,7 @@ std::vector<bool> ComponentsLosingMarks(const StaticPointsResult& result,
 WindowStaticPointsStats DetermineStaticPointsInWindow(const Config& config, Map* map) {
   WindowStaticPointsStats stats;
   const Stopwatch total;
-  if (map->keyframes().size() < 2) return stats;
+  if (map->window().size() < 2) return stats;
   const std::vector<int> keyframes = CovisibleKeyFrames(*map, kMinCovisiblePoints);
   if (keyframes.size() < 2) return stats;
   std::vector<PointId> ids;

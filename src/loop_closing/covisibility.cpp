@@ -9,7 +9,7 @@ CovisibilityIndex::CovisibilityIndex(const Map& map) {
   const auto add = [this](const KeyFrame& keyframe) {
     for (PointId id : keyframe.points) observers_[id].push_back(keyframe.id);
   };
-  for (const KeyFrame& keyframe : map.keyframes()) add(keyframe);
+  for (const KeyFrame& keyframe : map.window()) add(keyframe);
   for (const auto& [id, keyframe] : map.archived_keyframes()) add(keyframe);
 }
 

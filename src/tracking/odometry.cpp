@@ -179,7 +179,7 @@ bool Odometry::RematchAndSolveInitialPose(Current* current,
 }
 
 bool Odometry::CanRelocalise() const {
-  return config_.tracking.relocalisation && !map_.keyframes().empty();
+  return config_.tracking.relocalisation && !map_.window().empty();
 }
 
 FrameResult Odometry::Untracked(Current* current, FrameResult result, const char* why) {

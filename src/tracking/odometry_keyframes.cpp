@@ -85,7 +85,7 @@ int Odometry::MakeKeyFrame(const Current& current) {
   keyframe.information = current.pose.information;
   keyframe.weak_since_previous = weak_since_keyframe_;
   map_.AddKeyFrame(std::move(keyframe), MapLimits());
-  map_.Cull(map_.keyframes()[map_.first_recent_keyframe()].frame_index, cfg.cull_min_found_ratio,
+  map_.Cull(map_.window()[map_.first_recent_keyframe()].frame_index, cfg.cull_min_found_ratio,
             kCullMinVisible, StaticSeenSinceFrame());
   last_keyframe_frame_ = frame_index;
   last_keyframe_static_ = current.pose.num_inliers;
@@ -147,7 +147,7 @@ void Odometry::AddViews(const Current& current, FrameResult* result) const {
 }
 
 void Odometry::RememberPoseOnNewestKeyFrame(int frame_index) {
-  const KeyFrame& newest = map_.keyframes().back();
+  const KeyFrame& newest = map_.window().back();
   last_on_keyframe_.keyframe_id = newest.id;
   last_on_keyframe_.frame_index = frame_index;
   last_on_keyframe_.T_keyframe_camera = newest.T_world_camera.inverse() * motion_.last_pose();

@@ -60,7 +60,7 @@ PlaceLookup* Odometry::LostFramePlaces() const {
 bool Odometry::RelocaliseAtNamedPlaces(Current* current, int frame_index, PlaceLookup* places) {
   if (places == nullptr) return false;
   std::vector<int> window_before;
-  for (const KeyFrame& keyframe : map_.keyframes()) window_before.push_back(keyframe.id);
+  for (const KeyFrame& keyframe : map_.window()) window_before.push_back(keyframe.id);
   const int recent_before = static_cast<int>(window_before.size() - map_.first_recent_keyframe());
   const std::vector<int> named = places->Candidates(map_, current->features);
   for (size_t i = 0; i < named.size() && i < kPlacesTriedPerFrame; ++i) {

@@ -108,7 +108,7 @@ std::vector<const FrameMeasurements*> Odometry::FrontEndReferenceFrames() const 
   // spread evenly from the oldest of the newest keyframes (longest baseline) to the newest
   // eligible one.
   std::vector<const FrameMeasurements*> frames;
-  const auto& keyframes = map_.keyframes();
+  const auto& keyframes = map_.window();
   const int first = static_cast<int>(map_.first_recent_keyframe());
   const int now = frame_index_ - 1;
   int n = static_cast<int>(keyframes.size()) - first;

@@ -84,7 +84,7 @@ void Feed(Slam* slam, int begin, int end, const FrameRequest& request, Fed* run)
   for (int i = begin; i < end; ++i) {
     const FrameResult r = slam->ProcessFrame(room.frames[i], request);
     if (r.keyframe) {
-      run->keyframes.push_back("k" + std::to_string(slam->MapSnapshot().keyframes().back().id));
+      run->keyframes.push_back("k" + std::to_string(slam->MapSnapshot().window().back().id));
     }
     run->results.push_back(r);
   }
@@ -119,11 +119,11 @@ TEST(KeyFrameObserver, ReceivesEveryKeyFrameWithSharedImagesAndLabels) {
   }
   // The window's poses as the back end left them.
   const Map map = slam.MapSnapshot();
-  ASSERT_EQ(recorder->last_window.size(), map.keyframes().size());
-  for (size_t i = 0; i < map.keyframes().size(); ++i) {
-    EXPECT_EQ(recorder->last_window[i].id, map.keyframes()[i].id);
+  ASSERT_EQ(recorder->last_window.size(), map.window().size());
+  for (size_t i = 0; i < map.window().size(); ++i) {
+    EXPECT_EQ(recorder->last_window[i].id, map.window()[i].id);
     EXPECT_TRUE(
-        recorder->last_window[i].T_world_camera.isApprox(map.keyframes()[i].T_world_camera));
+        recorder->last_window[i].T_world_camera.isApprox(map.window()[i].T_world_camera));
   }
 }
 
@@ -148,7 +148,7 @@ TEST(KeyFrameObserver, ThreadedDeliversTheSameOnTheBackEndThread) {
     EXPECT_EQ(recorder->events, run.keyframes) << "back end " << backend;
     EXPECT_FALSE(recorder->overlapped);
     for (const std::thread::id id : recorder->threads) EXPECT_NE(id, std::this_thread::get_id());
-    EXPECT_EQ(recorder->last_window.size(), slam.MapSnapshot().keyframes().size());
+    EXPECT_EQ(recorder->last_window.size(), slam.MapSnapshot().window().size());
   }
 }
 
@@ -195,8 +195,8 @@ NewestCorrected CorrectNewestKeyFrame(Slam* slam) {
   Feed(slam, 0, 15, FrameRequest{}, &run);
   slam->WaitForBackEnd();
   NewestCorrected out{slam->MapSnapshot()};
-  out.newest = out.before.keyframes().back().id;
-  out.moved = out.before.keyframes().back().T_world_camera;
+  out.newest = out.before.window().back().id;
+  out.moved = out.before.window().back().T_world_camera;
   out.moved.translation().x() += 0.1;
   out.corrected = slam->CorrectKeyFrames({{out.newest, out.moved}});
   return out;

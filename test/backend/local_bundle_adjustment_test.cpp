@@ -76,8 +76,8 @@ double RotationErrorRad(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) 
 double Cost(const Map& map, const std::vector<Eigen::Isometry3d>& T_camera_world,
             const std::vector<Eigen::Vector3d>& p_world) {
   double cost = 0.0;
-  for (size_t k = 0; k < map.keyframes().size(); ++k) {
-    for (const auto& [id, m] : map.keyframes()[k].measurements.by_point) {
+  for (size_t k = 0; k < map.window().size(); ++k) {
+    for (const auto& [id, m] : map.window()[k].measurements.by_point) {
       const Eigen::Vector3d e = T_camera_world[k] * p_world[id] - m.y_camera;
       cost += e.dot(m.covariance.inverse() * e);
     }
@@ -111,10 +111,10 @@ TEST(LocalBundleAdjustment, RecoversPerturbedPosesAndPoints) {
   // geometry (rotation and translation across the view are hard to tell apart at 2-4 m).
   std::vector<Eigen::Isometry3d> T_estimated;
   for (int k = 0; k < 5; ++k) {
-    const Eigen::Isometry3d& T = scene.map.keyframes()[k].measurements.T_camera_world;
+    const Eigen::Isometry3d& T = scene.map.window()[k].measurements.T_camera_world;
     EXPECT_LT((T.translation() - scene.T_camera_world_true[k].translation()).norm(), 0.006) << k;
     EXPECT_LT(RotationErrorRad(T, scene.T_camera_world_true[k]), 0.002) << k;
-    EXPECT_TRUE(scene.map.keyframes()[k].T_world_camera.isApprox(T.inverse(), 1e-12));
+    EXPECT_TRUE(scene.map.window()[k].T_world_camera.isApprox(T.inverse(), 1e-12));
     T_estimated.push_back(T);
   }
   std::vector<Eigen::Vector3d> p_estimated;
@@ -131,21 +131,21 @@ TEST(LocalBundleAdjustment, RecoversPerturbedPosesAndPoints) {
 
 TEST(LocalBundleAdjustment, FirstKeyFrameStaysFixed) {
   Scene scene = MakeScene(4, 50, 2);
-  const Eigen::Isometry3d before = scene.map.keyframes()[0].measurements.T_camera_world;
+  const Eigen::Isometry3d before = scene.map.window()[0].measurements.T_camera_world;
   LocalBundleAdjustment(Unlimited(), &scene.map);
-  EXPECT_TRUE(scene.map.keyframes()[0].measurements.T_camera_world.isApprox(before, 1e-12));
+  EXPECT_TRUE(scene.map.window()[0].measurements.T_camera_world.isApprox(before, 1e-12));
 }
 
 TEST(LocalBundleAdjustment, LeavesOutOutliersButKeepsThem) {
   Scene scene = MakeScene(5, 60, 3);
   const Config config = Unlimited();
-  KeyFrame& keyframe = scene.map.mutable_keyframes()[3];
+  KeyFrame& keyframe = scene.map.mutable_window()[3];
   keyframe.measurements.by_point.at(7).y_camera += Eigen::Vector3d(0.0, 0.2, 0.3);
   const LocalBaStats stats = LocalBundleAdjustment(config, &scene.map);
   EXPECT_GE(stats.outliers, 1);
   EXPECT_LE(stats.outliers, 20);  // chi-square 95%: about 5% of 300 good measurements
   // Kept in the keyframe: static point determination uses it as evidence of motion.
-  EXPECT_EQ(scene.map.keyframes()[3].measurements.by_point.count(7), 1u);
+  EXPECT_EQ(scene.map.window()[3].measurements.by_point.count(7), 1u);
   EXPECT_LT((scene.map.Find(7)->p_world - scene.p_world_true[7]).norm(), 0.01);
 }
 
@@ -155,12 +155,12 @@ TEST(LocalBundleAdjustment, UnverifiedPointsFollowTheirNewestKeyFrame) {
   scene.map.Find(1)->candidate = true;  // not yet verified
   const Eigen::Vector3d p0 = scene.map.Find(0)->p_world, p1 = scene.map.Find(1)->p_world;
   const Eigen::Isometry3d T_camera_world_before =
-      scene.map.keyframes()[3].measurements.T_camera_world;
+      scene.map.window()[3].measurements.T_camera_world;
   const LocalBaStats stats = LocalBundleAdjustment(Unlimited(), &scene.map);
   EXPECT_EQ(stats.points, 38);
   // Not optimised, but carried with keyframe 3 (the newest that measured them).
   const Eigen::Isometry3d correction =
-      scene.map.keyframes()[3].T_world_camera * T_camera_world_before;
+      scene.map.window()[3].T_world_camera * T_camera_world_before;
   EXPECT_FALSE(correction.isApprox(Eigen::Isometry3d::Identity(), 1e-6));
   EXPECT_TRUE(scene.map.Find(0)->p_world.isApprox(correction * p0, 1e-12));
   EXPECT_TRUE(scene.map.Find(1)->p_world.isApprox(correction * p1, 1e-12));
@@ -171,13 +171,13 @@ TEST(LocalBundleAdjustment, LargeCorrectionsAreNotApplied) {
   Config config = Unlimited();
   config.backend.ba_max_correction_m =
       0.001;  // the perturbation is ~35 mm: the solution moves more
-  const Eigen::Isometry3d before = scene.map.keyframes()[4].T_world_camera;
+  const Eigen::Isometry3d before = scene.map.window()[4].T_world_camera;
   const Eigen::Vector3d p = scene.map.Find(5)->p_world;
   const LocalBaStats stats = LocalBundleAdjustment(config, &scene.map);
   EXPECT_TRUE(stats.ran);
   EXPECT_TRUE(stats.rejected);
   EXPECT_GT(stats.largest_correction_m, 0.001);
-  EXPECT_TRUE(scene.map.keyframes()[4].T_world_camera.isApprox(before, 0.0));
+  EXPECT_TRUE(scene.map.window()[4].T_world_camera.isApprox(before, 0.0));
   EXPECT_EQ(scene.map.Find(5)->p_world, p);
 }
 

@@ -75,8 +75,8 @@ TEST(LocalMappingJob, CopyRunApplyEqualsTheRunInPlace) {
   EXPECT_TRUE(job.moved_keyframes());
   EXPECT_GT(job.status().spd.unmarked, 0);  // the moving cluster
   for (int k = 0; k < kKeyFrames; ++k) {
-    EXPECT_TRUE(live.keyframes()[k].T_world_camera.matrix() ==
-                in_place.keyframes()[k].T_world_camera.matrix())
+    EXPECT_TRUE(live.window()[k].T_world_camera.matrix() ==
+                in_place.window()[k].T_world_camera.matrix())
         << k;
   }
   int unmarked = 0;
@@ -104,7 +104,7 @@ TEST(LocalMappingJob, ApplySkipsWhatLeftTheMapMeanwhile) {
   EXPECT_EQ(live.FindKeyFrame(0), nullptr);
   // The keyframe made meanwhile is not refined; it moves with the copied window's newest.
   const Eigen::Isometry3d correction = live.FindKeyFrame(job.newest_keyframe_id())->T_world_camera *
-                                       MakeMap(4).keyframes().back().T_world_camera.inverse();
+                                       MakeMap(4).window().back().T_world_camera.inverse();
   EXPECT_TRUE(live.FindKeyFrame(newest_id)->T_world_camera.translation().isApprox(
       correction * Eigen::Vector3d(9.0, 9.0, 9.0)));
   // The others were refined: keyframe 2 moved from its perturbed start.
@@ -149,7 +149,7 @@ TEST(LocalMappingJob, WhatWasMadeDuringTheRunFollowsItsNewestKeyFrame) {
   const Config config = TestConfig();
   Map live = MakeMap(6);
   LocalMappingJob job(live, 0);
-  const Eigen::Isometry3d T_world_newest = live.keyframes().back().T_world_camera;
+  const Eigen::Isometry3d T_world_newest = live.window().back().T_world_camera;
   KeyFrame made;
   made.T_world_camera = T_world_newest * Eigen::Translation3d(0.05, 0.0, 0.01);
   made.measurements.T_camera_world = made.T_world_camera.inverse();
@@ -184,8 +184,8 @@ TEST(LocalMappingJob, ACorrectionOfTheMapDuringTheRunKeepsTheCorrectedPoses) {
   job.Run(config);
   ASSERT_TRUE(job.moved_keyframes());
   job.Apply(&live);
-  for (const KeyFrame& keyframe : live.keyframes()) {
-    const KeyFrame& expected = corrected.keyframes()[keyframe.id];
+  for (const KeyFrame& keyframe : live.window()) {
+    const KeyFrame& expected = corrected.window()[keyframe.id];
     EXPECT_TRUE(keyframe.T_world_camera.matrix() == expected.T_world_camera.matrix())
         << keyframe.id;
   }

@@ -47,7 +47,7 @@ TEST(RefinedTrajectory, FramesFollowTheirKeyFramesAndErasedOnesKeepTheirLastPose
   }
   // The back end moves the newest keyframe by 5 cm: its frames follow, older ones (their
   // keyframes erased from the map) stay.
-  KeyFrame& newest = map.FindKeyFrame(map.keyframes().back().id)[0];
+  KeyFrame& newest = map.FindKeyFrame(map.window().back().id)[0];
   newest.T_world_camera.translation().y() += 0.05;
   refined.UpdateKeyFrames(map);
   const RefinedTrajectory::Snapshot snapshot = refined.Take();
@@ -105,11 +105,11 @@ TEST(RefinedTrajectory, ALoopCorrectionMovesTheFramesOfErasedKeyFramesToo) {
   }
   refined.UpdateKeyFrames(map);  // the erased keyframes retire into their blocks
   const RefinedTrajectory::Snapshot before = refined.Take();
-  ASSERT_EQ(map.keyframes().size(), 3u);
+  ASSERT_EQ(map.window().size(), 3u);
   std::map<int, Eigen::Isometry3d> corrected;
   std::map<int, double> dy_of_keyframe;  // [m]
   double dy = 1.0;
-  for (const KeyFrame& keyframe : map.keyframes()) {
+  for (const KeyFrame& keyframe : map.window()) {
     Eigen::Isometry3d T = keyframe.T_world_camera;
     T.translation().y() += dy;
     corrected[keyframe.id] = T;

@@ -142,7 +142,7 @@ TEST(SlamThreads, ResetDropsQueuedKeyFrames) {
   EXPECT_EQ(first.frame_index, 0);
   EXPECT_EQ(first.backend_thread.backlog, 1);  // the new map's first keyframe
   EXPECT_FALSE(first.backend_thread.delivered);
-  EXPECT_EQ(slam.MapSnapshot().keyframes().size(), 1u);
+  EXPECT_EQ(slam.MapSnapshot().window().size(), 1u);
 }
 
 TEST(SlamThreads, ResetRightAfterKeyFramesNeverReportsOldRuns) {
@@ -209,7 +209,7 @@ TEST(SlamThreads, SynchronousModeReportsEachRunWithItsKeyFrame) {
 // between (matched again, moved, or relabelled).
 int ChangedPoints(const Map& before, const Map& after) {
   int changed = 0;
-  for (const KeyFrame& keyframe : before.keyframes()) {
+  for (const KeyFrame& keyframe : before.window()) {
     for (const PointId id : keyframe.points) {
       const MapPoint* a = before.Find(id);
       const MapPoint* b = after.Find(id);
@@ -240,7 +240,7 @@ int WaitForAppliedRuns(Slam* slam) {
 // points checked.
 int FrontEndUpdatesKept(const Map& at_copy, const Map& before, const Map& after) {
   int unmarked = 0;
-  for (const KeyFrame& keyframe : before.keyframes()) {
+  for (const KeyFrame& keyframe : before.window()) {
     for (const PointId id : keyframe.points) {
       const MapPoint* copied = at_copy.Find(id);
       const MapPoint* a = before.Find(id);
@@ -263,7 +263,7 @@ class SnapshotReader {
   explicit SnapshotReader(const Slam* slam)
       : thread_([this, slam] {
           while (!done_) {
-            snapshots_ += slam->MapSnapshot().keyframes().empty() ? 0 : 1;
+            snapshots_ += slam->MapSnapshot().window().empty() ? 0 : 1;
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
           }
         }) {}

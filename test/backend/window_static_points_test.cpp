@@ -89,7 +89,7 @@ std::vector<PointId> AddGlitchCluster(Scene* scene, const Eigen::Vector3d& centr
     p_world.push_back(point.p_world);
     ids.push_back(scene->map.AddPoint(point));
   }
-  auto& keyframes = scene->map.mutable_keyframes();
+  auto& keyframes = scene->map.mutable_window();
   for (size_t k = 0; k < keyframes.size(); ++k) {
     FrameMeasurements& frame = keyframes[k].measurements;
     for (int i = 0; i < count; ++i) {
@@ -197,7 +197,7 @@ TEST(WindowStaticPoints, NeedsTwoKeyFramesAndCovisibility) {
   EXPECT_FALSE(DetermineStaticPointsInWindow(config, &one.map).ran);
   Scene scene = MakeScene(12, 0.01, 7);
   // The newest keyframe keeps 10 measurements: every other keyframe shares fewer than 20 with it.
-  auto& newest = scene.map.mutable_keyframes().back().measurements.by_point;
+  auto& newest = scene.map.mutable_window().back().measurements.by_point;
   for (PointId id = 10; id < 240; ++id) newest.erase(id);
   EXPECT_FALSE(DetermineStaticPointsInWindow(config, &scene.map).ran);
   EXPECT_EQ(CountMarked(scene.map, scene.moving_ids), 40);

@@ -26,7 +26,7 @@ class Corrector : public KeyFrameObserver {
     if (added.empty() || slam_ == nullptr) return;
     std::map<int, Eigen::Isometry3d> corrected;
     slam_->ReadMap([&](const Map& map) {
-      for (const KeyFrame& keyframe : map.keyframes()) {
+      for (const KeyFrame& keyframe : map.window()) {
         corrected[keyframe.id] = Eigen::Translation3d(0.001, 0.0, 0.0) * keyframe.T_world_camera;
       }
     });

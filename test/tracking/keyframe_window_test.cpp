@@ -28,7 +28,7 @@ KeyFrame KeyFrameAt(double x_m, double yaw_deg, std::vector<PointId> points) {
 
 std::vector<int> WindowIds(const Map& map) {
   std::vector<int> ids;
-  for (const KeyFrame& keyframe : map.keyframes()) ids.push_back(keyframe.id);
+  for (const KeyFrame& keyframe : map.window()) ids.push_back(keyframe.id);
   return ids;
 }
 

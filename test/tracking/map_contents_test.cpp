@@ -44,7 +44,7 @@ TEST(MapContents, FromContentsKeepsIdsArchivesKeyFramesAndCountsObservers) {
   Map map = Map::FromContents(original.Contents());
   EXPECT_EQ(map.size(), 6u);
   EXPECT_EQ(map.num_keyframes(), 3u);
-  EXPECT_TRUE(map.keyframes().empty());
+  EXPECT_TRUE(map.window().empty());
   EXPECT_EQ(map.next_point_id(), original.next_point_id());
   ASSERT_NE(map.Find(3), nullptr);
   EXPECT_EQ(map.Find(3)->p_world, Eigen::Vector3d(3, 1.5, 2.0));
@@ -100,13 +100,13 @@ TEST(MapContents, IdsWhoseNextWouldOverflowAreRefused) {
 TEST(MapContents, SetWindowToChoosesTheWindowAndErasesNothing) {
   Map map = Map::FromContents(ThreeKeyFrames().Contents());
   map.SetWindowTo({2, 0, 7});
-  ASSERT_EQ(map.keyframes().size(), 2u);
-  EXPECT_EQ(map.keyframes()[0].id, 0);
-  EXPECT_EQ(map.keyframes()[1].id, 2);
+  ASSERT_EQ(map.window().size(), 2u);
+  EXPECT_EQ(map.window()[0].id, 0);
+  EXPECT_EQ(map.window()[1].id, 2);
   EXPECT_EQ(map.first_recent_keyframe(), 0u);
   EXPECT_EQ(map.num_keyframes(), 3u);
   map.SetWindowTo({1});
-  EXPECT_EQ(map.keyframes().size(), 1u);
+  EXPECT_EQ(map.window().size(), 1u);
   EXPECT_EQ(map.num_keyframes(), 3u);
   EXPECT_EQ(map.LocalPoints({}), (std::vector<PointId>{2, 3}));
 }

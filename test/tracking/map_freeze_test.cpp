@@ -76,8 +76,8 @@ TEST(MapFreeze, NewKeyFramesLeaveTheMapWithTheWindowAndLoadedOnesStay) {
   }
   // Frozen: the loaded keyframes and the window (the newest 2, ids 13 and 14).
   EXPECT_EQ(frozen.num_keyframes(), static_cast<size_t>(kLoadedKeyFrames) + 2);
-  ASSERT_EQ(frozen.keyframes().size(), 2u);
-  EXPECT_EQ(frozen.keyframes().front().id, kLoadedKeyFrames + 8);
+  ASSERT_EQ(frozen.window().size(), 2u);
+  EXPECT_EQ(frozen.window().front().id, kLoadedKeyFrames + 8);
   EXPECT_EQ(frozen.FindKeyFrame(kLoadedKeyFrames), nullptr);  // the first new one
   ExpectLoadedPartUnchanged(loaded, frozen);
   EXPECT_EQ(frozen.Find(0)->observing_keyframes, 1 + 2);  // its loaded keyframe and the window

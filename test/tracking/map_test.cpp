@@ -28,8 +28,8 @@ TEST(Map, KeyFrameWindowAndLocalPoints) {
     kf.points = {ids[2 * k], ids[2 * k + 1]};
     map.AddKeyFrame(kf, KeyFrameMapLimits::Newest(2));
   }
-  ASSERT_EQ(map.keyframes().size(), 2u);
-  EXPECT_EQ(map.keyframes().front().id, 1);
+  ASSERT_EQ(map.window().size(), 2u);
+  EXPECT_EQ(map.window().front().id, 1);
   auto local = map.LocalPoints({ids[0], ids[2]});
   std::sort(local.begin(), local.end());
   EXPECT_EQ(local, (std::vector<PointId>{ids[0], ids[2], ids[3], ids[4], ids[5]}));

@@ -21,7 +21,7 @@ Eigen::Isometry3d Correction() {
 }
 
 void CorrectMap(const Eigen::Isometry3d& C, Map* map) {
-  for (KeyFrame& keyframe : map->mutable_keyframes()) {
+  for (KeyFrame& keyframe : map->mutable_window()) {
     keyframe.T_world_camera = C * keyframe.T_world_camera;
     keyframe.measurements.T_camera_world = keyframe.T_world_camera.inverse();
   }
@@ -46,7 +46,7 @@ void TrackUntil(Odometry* odometry, bool keyframe_last) {
 TEST(OdometryCorrection, LastPoseFollowsTheNewestKeyFrameMadeBeforeIt) {
   Odometry odometry{Config()};
   TrackUntil(&odometry, false);
-  ASSERT_NE(odometry.map().keyframes().back().frame_index, kFrames);
+  ASSERT_NE(odometry.map().window().back().frame_index, kFrames);
   const Eigen::Isometry3d T_world_last = odometry.T_world_last_camera();
   CorrectMap(Correction(), odometry.mutable_map());
   odometry.AdoptNewestKeyFramePose();
@@ -62,7 +62,7 @@ TEST(OdometryCorrection, LastPoseIsTheNewestKeyFramesWhenItWasMadeFromIt) {
   CorrectMap(Correction(), odometry.mutable_map());
   odometry.AdoptNewestKeyFramePose();
   EXPECT_TRUE(odometry.T_world_last_camera().matrix() ==
-              odometry.map().keyframes().back().T_world_camera.matrix());
+              odometry.map().window().back().T_world_camera.matrix());
 }
 
 TEST(OdometryCorrection, EachFrameReportsThePoseItWasTrackedFrom) {

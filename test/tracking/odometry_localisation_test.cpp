@@ -200,7 +200,7 @@ TEST(OdometryLocalisation, LocalisationOnlyKeepsLoadedKeyFramesInTheWindow) {
     temporary += result.keyframe ? 1 : 0;
     if (temporary <= config.tracking.window_keyframes) continue;
     int loaded_in_window = 0;
-    for (const KeyFrame& keyframe : odometry.map().keyframes()) {
+    for (const KeyFrame& keyframe : odometry.map().window()) {
       loaded_in_window += keyframe.id < loaded_end ? 1 : 0;
     }
     EXPECT_GE(loaded_in_window, 1) << "frame " << i << ": no loaded keyframe in the window";

@@ -19,7 +19,7 @@ constexpr int kMinCovisiblePoints = 15;
 constexpr double kNearbyKeyFrameM = 0.3;
 constexpr double kNearbyKeyFrameDeg = 20.0;
 
-/// Ids of the window for the map's newest keyframe (the last of map.keyframes()), ascending:
+/// Ids of the window for the map's newest keyframe (the last of map.window()), ascending:
 /// the newest `limits.recent_keyframes` keyframes of the map, then up to
 /// `limits.covisible_keyframes` older ones, half of the places first to the nearby keyframes
 /// that share no points with it (nearest first), the rest by the number of points shared with

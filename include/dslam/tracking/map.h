@@ -187,8 +187,8 @@ class Map {
   const KeyFrame& AddKeyFrame(KeyFrame keyframe, const KeyFrameMapLimits& limits);
 
   /// The window's keyframes, oldest first (ids ascending); the newest keyframe is last.
-  const std::deque<KeyFrame>& keyframes() const { return keyframes_; }
-  /// Index in keyframes() of the oldest of the newest `recent_keyframes` (0 without older
+  const std::deque<KeyFrame>& window() const { return keyframes_; }
+  /// Index in window() of the oldest of the newest `recent_keyframes` (0 without older
   /// covisible keyframes in the window).
   size_t first_recent_keyframe() const { return keyframes_.size() - recent_in_window_; }
   /// Keyframes of the map outside the window, by id.
@@ -198,8 +198,8 @@ class Map {
   /// Every keyframe of the map (window and archive), oldest first (ids ascending, which is the
   /// order they were made in).
   std::vector<const KeyFrame*> AllKeyFrames() const;
-  /// The same, for the back end to refine poses and drop measurements (ids and order stay).
-  std::deque<KeyFrame>& mutable_keyframes() { return keyframes_; }
+  /// The window for the back end to refine poses and drop measurements (ids and order stay).
+  std::deque<KeyFrame>& mutable_window() { return keyframes_; }
 
   /// Ids of the points observed by the keyframes in the window plus `extra`, plus verified static
   /// points (marked, not candidates) last seen at or after `static_seen_since_frame` (a negative
