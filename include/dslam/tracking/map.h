@@ -3,8 +3,9 @@
 // keyframes that observed them. The map keeps keyframes beyond the window (up to a cap, culling
 // redundant ones); the window, the keyframes whose points tracking searches and the back end
 // refines, is the newest keyframes, plus older ones chosen by covisibility when
-// tracking.covisible_keyframes > 0 (0 by default; keyframe_window.h), so that a camera returning
-// to a view finds the points it made there. Not thread-safe: Slam
+// tracking.covisible_keyframes > 0 (0 by default; keyframe_window.h) or the map is frozen
+// (localisation only: loaded keyframes around the pose), so that a camera returning to a view
+// finds the points it made there. Not thread-safe: Slam
 // (backend/slam.h) owns the live map and guards it with its map mutex; the tracking thread changes
 // it in Odometry::ProcessFrame, and the back end copies the window into a LocalMappingJob and
 // applies the job's results under that mutex (slam.h states the locking policy).
