@@ -228,7 +228,9 @@ TEST(BadInput, BoardCoveringMostOfTheViewDoesNotMoveThePose) {
   double covered = 0.0;
   for (int i = 0; i < kFrames; ++i) {
     synth::SyntheticFrame f = sequence.RenderFrame(i);
-    if (i < kGoodStart) EXPECT_LT(f.dynamic_fraction, 0.01);  // its edge enters at frame 29
+    if (i < kGoodStart) {
+      EXPECT_LT(f.dynamic_fraction, 0.01);  // its edge enters at frame 29
+    }
     covered = f.dynamic_fraction;
     truth.push_back({f.frame.stamp_s, f.T_world_camera});
     frames.push_back(std::move(f.frame));

@@ -85,7 +85,9 @@ TEST(RefinedTrajectory, FullBlocksGoToATemporaryFileThatSnapshotsKeep) {
   for (size_t i = 0; i < frames; i += 101) {
     EXPECT_DOUBLE_EQ(late_poses[i].stamp_s, 0.1 * i);
     EXPECT_NEAR(late_poses[i].T_world_camera.translation().x(), 0.001 * i, 1e-6) << i;
-    if (i < early_poses.size()) EXPECT_DOUBLE_EQ(early_poses[i].stamp_s, 0.1 * i);
+    if (i < early_poses.size()) {
+      EXPECT_DOUBLE_EQ(early_poses[i].stamp_s, 0.1 * i);
+    }
   }
 }
 

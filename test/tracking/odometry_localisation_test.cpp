@@ -166,7 +166,9 @@ TEST(OdometryLocalisation, LocalisationOnlyStaysLostWhereExtendingReinitialises)
       elsewhere.stamp_s = room.frames[i].stamp_s;
       const FrameResult result = odometry.ProcessFrame(elsewhere);
       initialised += result.state == TrackingState::kInitialised ? 1 : 0;
-      if (only) EXPECT_EQ(result.state, TrackingState::kLost) << i;
+      if (only) {
+        EXPECT_EQ(result.state, TrackingState::kLost) << i;
+      }
     }
     EXPECT_EQ(initialised > 0, !only);  // extending: a new map of the blocks
     if (!only) continue;

@@ -77,7 +77,9 @@ TEST(MatchByDescriptor, FindsEachPointsFeatureWithoutAPose) {
       MatchByDescriptor(map, points, features, DescriptorMatchRules());
   ASSERT_EQ(matches.size(), static_cast<size_t>(kFeatures - kFeatures / 10));
   for (size_t k = 0; k < matches.size(); ++k) {
-    if (k > 0) EXPECT_LT(matches[k - 1].feature, matches[k].feature);
+    if (k > 0) {
+      EXPECT_LT(matches[k - 1].feature, matches[k].feature);
+    }
     const auto at = std::find(points.begin(), points.end(), matches[k].id) - points.begin();
     ASSERT_LT(at, kFeatures) << "the stranger was matched";
     EXPECT_EQ(feature_of_point[at], matches[k].feature);
