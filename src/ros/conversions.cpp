@@ -129,11 +129,7 @@ Eigen::Matrix<double, 6, 6> OdomCovariance(const Eigen::Matrix<double, 6, 6>& in
                                            const Eigen::Isometry3d& T_base_camera,
                                            double unknown_variance) {
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
-  const Eigen::LDLT<Matrix6d> ldlt(information);
-  if (information.isZero() || ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      ldlt.vectorD().minCoeff() <= 1e-12 * std::max(1.0, ldlt.vectorD().maxCoeff())) {
-    return unknown_variance * Matrix6d::Identity();
-  }
+  if (!InvertibleInformation(information)) return unknown_variance * Matrix6d::Identity();
   // Covariance of [dp; dtheta] of T_odom_camera (left perturbation in the odom optical frame).
   const Matrix6d cov_odom_camera = CovarianceWorldCamera(information, T_odom_camera.inverse());
   // T_odom_base = T_bc T_oc T_cb: dp_ob = R_bc (dp - [R_oc t_cb]x dtheta), dtheta_o = R_bc dtheta.

@@ -15,6 +15,16 @@
 
 namespace dslam {
 namespace ros_layer {
+namespace {
+
+/// A 6x6 matrix into a message's row-major covariance array (nav_msgs/Odometry's pose and twist).
+void CopyCovariance(const Eigen::Matrix<double, 6, 6>& covariance, boost::array<double, 36>* out) {
+  for (int r = 0; r < 6; ++r) {
+    for (int c = 0; c < 6; ++c) (*out)[6 * r + c] = covariance(r, c);
+  }
+}
+
+}  // namespace
 
 void FillBackEndStatus(const BackEndStatus& b, dslam::FrameStatus* s) {
   s->backend_ran = b.ba.ran;
@@ -100,20 +110,10 @@ void FramePublisher::PublishOdom(const FrameResult& result, const std_msgs::Head
   odom.child_frame_id = config_.base_frame;
   odom.pose.pose = tf2::toMsg(T_odom_base);
   // The information is of the camera's pose in its own frame; the odom frame's rotation maps it.
-  const Eigen::Matrix<double, 6, 6> covariance =
-      OdomCovariance(result.information, odom_.T_odom_camera(), T_base_camera);
-  for (int r = 0; r < 6; ++r) {
-    for (int c = 0; c < 6; ++c) odom.pose.covariance[6 * r + c] = covariance(r, c);
-  }
-  odom.twist.twist.linear.x = twist_.velocity()(0);
-  odom.twist.twist.linear.y = twist_.velocity()(1);
-  odom.twist.twist.linear.z = twist_.velocity()(2);
-  odom.twist.twist.angular.x = twist_.velocity()(3);
-  odom.twist.twist.angular.y = twist_.velocity()(4);
-  odom.twist.twist.angular.z = twist_.velocity()(5);
-  for (int r = 0; r < 6; ++r) {
-    for (int c = 0; c < 6; ++c) odom.twist.covariance[6 * r + c] = twist_.covariance()(r, c);
-  }
+  CopyCovariance(OdomCovariance(result.information, odom_.T_odom_camera(), T_base_camera),
+                 &odom.pose.covariance);
+  odom.twist.twist = tf2::toMsg(twist_.velocity());
+  CopyCovariance(twist_.covariance(), &odom.twist.covariance);
   odom_pub_.publish(odom);
 }
 

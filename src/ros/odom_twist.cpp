@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 
 #include "dslam/core/geometry.h"
+#include "dslam/tracking/pose_optimizer.h"
 
 namespace dslam {
 namespace ros_layer {
@@ -37,13 +38,9 @@ Matrix6d BasePerturbationFromSolver(const Eigen::Isometry3d& T_camera_world,
 
 bool OdomTwist::PoseCovariance(const FrameResult& result, const Eigen::Isometry3d& T_base_camera,
                                Matrix6d* covariance) const {
-  const Eigen::LDLT<Matrix6d> ldlt(result.information);
-  if (result.information.isZero() || ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      ldlt.vectorD().minCoeff() <= 1e-12 * std::max(1.0, ldlt.vectorD().maxCoeff())) {
-    return false;
-  }
+  if (!InvertibleInformation(result.information)) return false;
   const Matrix6d J = BasePerturbationFromSolver(result.T_world_camera.inverse(), T_base_camera);
-  *covariance = J * ldlt.solve(Matrix6d::Identity()) * J.transpose();
+  *covariance = J * result.information.ldlt().solve(Matrix6d::Identity()) * J.transpose();
   return true;
 }
 

@@ -45,7 +45,13 @@ std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& l
   const size_t recent = std::min(all.size(), static_cast<size_t>(limits.recent_keyframes));
   std::vector<int> window;
   for (size_t i = 0; i < recent; ++i) window.push_back(all[i]->id);
-  if (all.empty() || limits.covisible_keyframes <= 0) {
+  // A frozen map (localisation only): the newest keyframes are temporary ones, so as many loaded
+  // keyframes around the pose join them at least, or tracking would search the temporary
+  // keyframes' new points alone.
+  const int places_wanted = map.frozen()
+                                ? std::max(limits.covisible_keyframes, limits.recent_keyframes)
+                                : limits.covisible_keyframes;
+  if (all.empty() || places_wanted <= 0) {
     std::sort(window.begin(), window.end());
     return window;
   }
@@ -66,7 +72,7 @@ std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& l
   }
   SortBestFirst(&covisible);
   SortBestFirst(&nearby);
-  const size_t places = static_cast<size_t>(limits.covisible_keyframes);
+  const size_t places = static_cast<size_t>(places_wanted);
   const size_t from_nearby =
       std::min(nearby.size(), std::max(places / 2, places - std::min(places, covisible.size())));
   const size_t from_covisible = std::min(covisible.size(), places - from_nearby);

@@ -42,12 +42,7 @@ void Odometry::UpdateMatchedPoints(const Current& current) {
 
 KeyFrameMapLimits Odometry::MapLimits() const {
   const TrackingConfig& cfg = config_.tracking;
-  // Localisation only: the newest keyframes are temporary ones, so the loaded keyframes around
-  // the pose join the window (the archive holds only loaded keyframes then) as many as the
-  // newest, or tracking would search the temporary keyframes' new points alone.
-  const int covisible = localisation_only_ ? std::max(cfg.covisible_keyframes, cfg.window_keyframes)
-                                           : cfg.covisible_keyframes;
-  return {cfg.window_keyframes, covisible, cfg.max_keyframes};
+  return {cfg.window_keyframes, cfg.covisible_keyframes, cfg.max_keyframes};
 }
 
 int Odometry::StaticSeenSinceFrame() const {

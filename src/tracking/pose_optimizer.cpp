@@ -170,6 +170,13 @@ Eigen::Matrix<double, 6, 6> PerturbationToWorldCamera(const Eigen::Isometry3d& T
   return A;
 }
 
+bool InvertibleInformation(const Matrix6d& information) {
+  if (information.isZero()) return false;
+  const Eigen::LDLT<Matrix6d> ldlt(information);
+  return ldlt.info() == Eigen::Success && ldlt.isPositive() &&
+         ldlt.vectorD().minCoeff() > 1e-12 * std::max(1.0, ldlt.vectorD().maxCoeff());
+}
+
 Eigen::Matrix<double, 6, 6> CovarianceWorldCamera(const Matrix6d& information,
                                                   const Eigen::Isometry3d& T_camera_world) {
   const Matrix6d A = PerturbationToWorldCamera(T_camera_world);

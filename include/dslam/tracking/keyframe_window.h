@@ -24,7 +24,8 @@ constexpr double kNearbyKeyFrameDeg = 20.0;
 /// `limits.covisible_keyframes` older ones, half of the places first to the nearby keyframes
 /// that share no points with it (nearest first), the rest by the number of points shared with
 /// the newest keyframe (most first); places left go to the other list. In a frozen map
-/// (Map::Freeze) the older keyframes are the frozen ones only.
+/// (Map::Freeze, localisation only) the older keyframes are the frozen ones only, and at least
+/// `limits.recent_keyframes` of them are added.
 std::vector<int> SelectKeyFrameWindow(const Map& map, const KeyFrameMapLimits& limits);
 
 /// (keyframe id, number of the points `keyframe` lists that it lists too) for every other

@@ -200,8 +200,7 @@ class Odometry {
   /// The last frame of this world ended with a pose tracking goes on from (tracked, recovered or
   /// (re-)initialised); false after a lost frame and a reset (FrameResult::has_previous_pose).
   bool LastFramePosed() const { return initialised_ && lost_frames_ == 0; }
-  /// The keyframe map's limits from tracking.window_keyframes, covisible_keyframes, max_keyframes;
-  /// localisation only adds at least window_keyframes loaded keyframes to the window.
+  /// The keyframe map's limits from tracking.window_keyframes, covisible_keyframes, max_keyframes.
   KeyFrameMapLimits MapLimits() const;
   /// First frame whose verified static points stay in the local map (keep_static_frames); -1: off.
   int StaticSeenSinceFrame() const;

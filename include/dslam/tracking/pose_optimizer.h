@@ -85,6 +85,11 @@ Eigen::Matrix<double, 3, 4> RotatedPointByQuaternion(const Eigen::Quaterniond& q
 /// frame, rotation about the fixed world axes, nav_msgs/Odometry covariance order).
 Eigen::Matrix<double, 6, 6> PerturbationToWorldCamera(const Eigen::Isometry3d& T_camera_world);
 
+/// Whether a 6x6 pose information (PoseResult::information) can be inverted into a covariance:
+/// nonzero and positive definite, its smallest LDLT pivot above 1e-12 of the largest (at least
+/// 1e-12). Zero for the first frame and a failed solve.
+bool InvertibleInformation(const Eigen::Matrix<double, 6, 6>& information);
+
 /// Covariance [m^2, rad^2] of T_world_camera in ROS order [x y z rx ry rz] from the information
 /// of T_camera_world (PoseResult::information): A info^-1 A^T with A =
 /// PerturbationToWorldCamera(). The information must be positive definite.
