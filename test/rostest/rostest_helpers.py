@@ -42,6 +42,13 @@ class Recorder:
                                      % (timeout_s, ", ".join(waiting)))
             time.sleep(0.05)
 
+    def wait_for(self, done, timeout_s=30.0):
+        """Waits until `done(self)` is true or `timeout_s` passed (the caller asserts what it
+        needs afterwards): for a node still working through frames when the player stopped."""
+        deadline = time.monotonic() + timeout_s
+        while not done(self) and time.monotonic() < deadline:
+            time.sleep(0.05)
+
     def callback(self, name):
         """A subscriber callback that records each message as `name`."""
         def store(msg):
